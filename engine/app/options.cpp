@@ -1,0 +1,68 @@
+#include "app/options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+namespace gdr {
+
+std::optional<int> parse_options(int argc, char** argv, Options& o) {
+  CLI::App app{"gdrender: gradient-domain Monte Carlo renderer (Embree + OpenCL)", "gdrender"};
+  app.set_version_flag("--version", std::string("gdrender ") + GDR_VERSION);
+  app.add_option("scene", o.scene, "Scene to render (Mitsuba XML)")->check(CLI::ExistingFile);
+  app.add_flag("--list-devices", o.list_devices, "List the OpenCL devices and exit");
+  app.add_option("--info", o.info_scene, "Print a scene's size and the effects it calls for, then exit")
+      ->check(CLI::ExistingFile);
+  app.add_option("--reconstruct", o.reconstruct,
+                 "Reconstruct a saved gradient-domain render (EXR with primal/dx/dy layers)")
+      ->check(CLI::ExistingFile);
+  app.add_option("-o,--output", o.output, "Output image (.exr; a tone-mapped .png is written beside it)");
+  app.add_option("--integrator", o.integrator, "pt | gpt (default: the scene's integrator, else pt)");
+  app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::PositiveNumber);
+  app.add_option("--time", o.time_budget, "Render for this many seconds")->check(CLI::PositiveNumber);
+  app.add_option("--seed", o.seed, "Random seed");
+  std::vector<std::string> defines;
+  app.add_option("-D", defines, "Scene parameter: -D name=value (overrides <default name=...>)");
+  app.add_option("--device", o.device,
+                 "OpenCL device: index, cpu, gpu, or part of its name (default: $GDR_DEVICE, else first GPU, else CPU)");
+  app.add_option("--stats", o.stats_path, "Write timers and counters to this JSON file");
+  app.add_option("--threads", o.threads, "Host and CPU-device threads (default: the usable CPUs)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--strict", o.strict, "Unsupported scene features are errors instead of warnings");
+  app.add_option("--filter", o.filter, "Pixel filter: box | tent | gaussian (default: the scene's)")
+      ->check(CLI::IsMember({"box", "tent", "gaussian"}));
+  app.add_option("--max-depth", o.max_depth, "Maximum path length (default: the scene's, else 16)")
+      ->check(CLI::Range(1, 1024));
+  app.add_option("--shift", o.shift, "Gradient-domain shift mapping: hybrid | replay")
+      ->check(CLI::IsMember({"hybrid", "replay"}));
+  app.add_option("--shift-threshold", o.shift_threshold, "Roughness below which a vertex counts as glossy/specular")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--recon", o.recon, "Poisson reconstruction: l1 | l2 | none")
+      ->check(CLI::IsMember({"l1", "l2", "none"}));
+  app.add_option("--alpha", o.alpha, "Weight of the primal in the screened Poisson solve")
+      ->check(CLI::PositiveNumber);
+  auto* verbose = app.add_flag("-v,--verbose", o.verbose, "More log output");
+  app.add_flag("-q,--quiet", o.quiet, "Only warnings and errors")->excludes(verbose);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  for (const std::string& d : defines) {
+    size_t eq = d.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      std::cerr << "gdrender: -D expects name=value, got '" << d << "'\n";
+      return 2;
+    }
+    o.defines[d.substr(0, eq)] = d.substr(eq + 1);
+  }
+  if (!o.list_devices && o.info_scene.empty() && o.reconstruct.empty() && o.scene.empty()) {
+    std::cerr << "gdrender: nothing to do: give a scene to render, --info SCENE, --reconstruct IN.exr "
+                 "or --list-devices (see --help)\n";
+    return 2;
+  }
+  return std::nullopt;
+}
+
+}  // namespace gdr

@@ -1,0 +1,147 @@
+#include "device/context.h"
+
+#include "device/kernel_cache.h"
+#include "device/kernel_sources.h"
+#include "device/runtime_env.h"
+#include "util/hash.h"
+#include "util/log.h"
+
+namespace gdr {
+
+Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stats_(stats) {
+  configure_runtime(0);
+  cl_int err = CL_SUCCESS;
+  cl_context_properties props[] = {CL_CONTEXT_PLATFORM,
+                                   reinterpret_cast<cl_context_properties>(device.platform), 0};
+  context_ = clCreateContext(props, 1, &device_.device, nullptr, nullptr, &err);
+  cl_check(err, "clCreateContext");
+  queue_ = clCreateCommandQueue(context_, device_.device, CL_QUEUE_PROFILING_ENABLE, &err);
+  if (err != CL_SUCCESS) clReleaseContext(context_);
+  cl_check(err, "clCreateCommandQueue");
+  if (stats_) {
+    stats_->set("device/name", device_.name);
+    stats_->set("device/platform", device_.platform_name);
+    stats_->set("device/type", device_.type);
+  }
+}
+
+Context::~Context() {
+  programs_.clear();
+  if (queue_) clReleaseCommandQueue(queue_);
+  if (context_) clReleaseContext(context_);
+}
+
+void Context::finish() const { cl_check(clFinish(queue_), "clFinish"); }
+
+std::string program_build_options(const Defines& defines) {
+  std::string options = "-cl-std=CL1.2";
+  for (const auto& [name, value] : defines) {
+    options += " -D" + name;
+    if (!value.empty()) options += "=" + value;
+  }
+  return options;
+}
+
+std::shared_ptr<Program> Context::program(const std::string& root, const Defines& defines) {
+  std::string options = program_build_options(defines);
+  std::string key = root + "|" + options;
+  if (auto it = programs_.find(key); it != programs_.end()) return it->second;
+
+  ScopedTimer timer(stats_, "kernel_build/" + root);
+  std::string source = resolve_kernel_source(root);
+  KernelCache cache(device_, options, source);
+  cl_int err = CL_SUCCESS;
+  cl_program program = nullptr;
+  std::vector<unsigned char> binary = cache.load();
+  if (!binary.empty()) {
+    const unsigned char* bin = binary.data();
+    size_t size = binary.size();
+    cl_int status = CL_SUCCESS;
+    program = clCreateProgramWithBinary(context_, 1, &device_.device, &size, &bin, &status, &err);
+    if (err != CL_SUCCESS || status != CL_SUCCESS ||
+        clBuildProgram(program, 1, &device_.device, options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
+      if (program) clReleaseProgram(program);
+      program = nullptr;  // a stale or foreign binary: build from source below
+    } else if (stats_) {
+      stats_->add_count("kernel_cache/hits");
+    }
+  }
+  if (!program) {
+    const char* text = source.c_str();
+    size_t length = source.size();
+    program = clCreateProgramWithSource(context_, 1, &text, &length, &err);
+    cl_check(err, "clCreateProgramWithSource");
+    err = clBuildProgram(program, 1, &device_.device, options.c_str(), nullptr, nullptr);
+    size_t log_size = 0;
+    clGetProgramBuildInfo(program, device_.device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &log_size);
+    std::string build_log(log_size, '\0');
+    if (log_size) {
+      clGetProgramBuildInfo(program, device_.device, CL_PROGRAM_BUILD_LOG, log_size, build_log.data(), nullptr);
+      build_log.resize(build_log.find('\0') == std::string::npos ? log_size : build_log.find('\0'));
+    }
+    if (err != CL_SUCCESS) {
+      clReleaseProgram(program);
+      throw DeviceError("building kernels/" + root + " (" + options + ") on " + device_.name +
+                        " failed:\n" + build_log);
+    }
+    if (stats_) stats_->add_count("kernel_cache/misses");
+    cache.store(program);
+  }
+  log::verbose("built kernels/", root, " (", options, ") in ", timer.elapsed(), " s");
+  auto result = std::make_shared<Program>(*this, program);
+  programs_[key] = result;
+  return result;
+}
+
+Program::~Program() {
+  if (program_) clReleaseProgram(program_);
+}
+
+Kernel Program::kernel(const std::string& name) const {
+  cl_int err = CL_SUCCESS;
+  cl_kernel k = clCreateKernel(program_, name.c_str(), &err);
+  cl_check(err, ("clCreateKernel(" + name + ")").c_str());
+  return Kernel(*context_, k, name);
+}
+
+Kernel::Kernel(Context& context, cl_kernel kernel, std::string name)
+    : context_(&context), kernel_(kernel), name_(std::move(name)) {}
+
+Kernel::~Kernel() {
+  if (kernel_) clReleaseKernel(kernel_);
+}
+
+Kernel::Kernel(Kernel&& o) noexcept : context_(o.context_), kernel_(o.kernel_), name_(std::move(o.name_)) {
+  o.kernel_ = nullptr;
+}
+
+void Kernel::run(size_t global, size_t local) {
+  if (global == 0) return;
+  size_t padded = (global + local - 1) / local * local;
+  launch(1, &padded, &local, global);
+}
+
+void Kernel::run_2d(size_t width, size_t height, size_t local_x, size_t local_y) {
+  if (width == 0 || height == 0) return;
+  size_t global[2] = {(width + local_x - 1) / local_x * local_x, (height + local_y - 1) / local_y * local_y};
+  size_t local[2] = {local_x, local_y};
+  launch(2, global, local, width * height);
+}
+
+void Kernel::launch(cl_uint dims, const size_t* global, const size_t* local, size_t items) {
+  cl_event event = nullptr;
+  cl_check(clEnqueueNDRangeKernel(context_->queue(), kernel_, dims, nullptr, global, local, 0, nullptr, &event),
+           ("launching kernel " + name_).c_str());
+  cl_int err = clWaitForEvents(1, &event);
+  if (err == CL_SUCCESS && context_->stats()) {
+    cl_ulong start = 0, end = 0;
+    clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_START, sizeof(start), &start, nullptr);
+    clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_END, sizeof(end), &end, nullptr);
+    context_->stats()->add_time("kernel/" + name_, end > start ? (end - start) * 1e-9 : 0.0);
+    context_->stats()->add_count("kernel_items/" + name_, items);
+  }
+  clReleaseEvent(event);
+  cl_check(err, ("running kernel " + name_).c_str());
+}
+
+}  // namespace gdr

@@ -1,0 +1,181 @@
+// One OpenCL device in use: its context and in-order profiling queue, program builds (with a
+// persistent binary cache), kernel launches that record their device time, and typed buffers.
+#pragma once
+#include <CL/cl.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "device/cl.h"
+#include "device/devices.h"
+#include "stats/stats.h"
+
+namespace gdr {
+
+// -D defines for a program build: name -> value ("" for a bare -Dname).
+using Defines = std::map<std::string, std::string>;
+
+class Program;
+
+class Context {
+ public:
+  explicit Context(const DeviceInfo& device, Stats* stats = nullptr);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  const DeviceInfo& device() const { return device_; }
+  bool is_cpu() const { return device_.type == "cpu"; }
+  cl_context handle() const { return context_; }
+  cl_command_queue queue() const { return queue_; }
+  Stats* stats() const { return stats_; }
+
+  // Builds kernels/<root> with `defines`; the same (root, defines) is built once per Context.
+  // Throws DeviceError with the compiler log (file:line of the kernel source) on failure.
+  std::shared_ptr<Program> program(const std::string& root, const Defines& defines = {});
+
+  void finish() const;
+
+ private:
+  DeviceInfo device_;
+  Stats* stats_;
+  cl_context context_ = nullptr;
+  cl_command_queue queue_ = nullptr;
+  std::map<std::string, std::shared_ptr<Program>> programs_;
+};
+
+class Kernel;
+
+class Program {
+ public:
+  Program(Context& context, cl_program program) : context_(&context), program_(program) {}
+  ~Program();
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+  Kernel kernel(const std::string& name) const;
+  cl_program handle() const { return program_; }
+
+ private:
+  Context* context_;
+  cl_program program_;
+};
+
+template <class T>
+class Buffer;
+
+class Kernel {
+ public:
+  Kernel(Context& context, cl_kernel kernel, std::string name);
+  ~Kernel();
+  Kernel(Kernel&& other) noexcept;
+  Kernel& operator=(Kernel&&) = delete;
+  Kernel(const Kernel&) = delete;
+
+  template <class T>
+  void set_arg(cl_uint index, const Buffer<T>& buffer) {
+    cl_mem mem = buffer.handle();
+    cl_check(clSetKernelArg(kernel_, index, sizeof(cl_mem), &mem), "clSetKernelArg");
+  }
+  template <class T>
+  void set_arg(cl_uint index, const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>, "kernel arguments are plain data");
+    cl_check(clSetKernelArg(kernel_, index, sizeof(T), &value), "clSetKernelArg");
+  }
+  // Sets all arguments in order.
+  template <class... Args>
+  Kernel& args(const Args&... a) {
+    cl_uint i = 0;
+    (set_arg(i++, a), ...);
+    return *this;
+  }
+
+  // Runs over `global` work items, padded up to a multiple of `local` (PoCL compiles again for
+  // every new local size, so it stays fixed; kernels check their own bound). Waits for the end
+  // and adds the device time to stats under "kernel/<name>".
+  void run(size_t global, size_t local = 64);
+  void run_2d(size_t width, size_t height, size_t local_x = 8, size_t local_y = 8);
+  const std::string& name() const { return name_; }
+
+ private:
+  void launch(cl_uint dims, const size_t* global, const size_t* local, size_t items);
+  Context* context_;
+  cl_kernel kernel_;
+  std::string name_;
+};
+
+// A device buffer of `count` elements of plain type T.
+template <class T>
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(Context& context, size_t count, cl_mem_flags flags = CL_MEM_READ_WRITE)
+      : context_(&context), count_(count) {
+    cl_int err = CL_SUCCESS;
+    // A zero-sized buffer is invalid in OpenCL; keep one element so kernels always get a handle.
+    mem_ = clCreateBuffer(context.handle(), flags, sizeof(T) * (count ? count : 1), nullptr, &err);
+    cl_check(err, "clCreateBuffer");
+  }
+  Buffer(Context& context, const std::vector<T>& data, cl_mem_flags flags = CL_MEM_READ_WRITE)
+      : Buffer(context, data.size(), flags) {
+    write(data);
+  }
+  ~Buffer() {
+    if (mem_) clReleaseMemObject(mem_);
+  }
+  Buffer(Buffer&& o) noexcept { *this = std::move(o); }
+  Buffer& operator=(Buffer&& o) noexcept {
+    if (this != &o) {
+      if (mem_) clReleaseMemObject(mem_);
+      context_ = o.context_;
+      mem_ = o.mem_;
+      count_ = o.count_;
+      o.mem_ = nullptr;
+      o.count_ = 0;
+    }
+    return *this;
+  }
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  size_t size() const { return count_; }
+  cl_mem handle() const { return mem_; }
+
+  void write(const T* data, size_t count, size_t offset = 0) {
+    if (count == 0) return;
+    ScopedTimer t(context_->stats(), "transfer/write");
+    cl_check(clEnqueueWriteBuffer(context_->queue(), mem_, CL_TRUE, offset * sizeof(T),
+                                  count * sizeof(T), data, 0, nullptr, nullptr),
+             "clEnqueueWriteBuffer");
+  }
+  void write(const std::vector<T>& data) { write(data.data(), data.size()); }
+  void read(T* out, size_t count, size_t offset = 0) const {
+    if (count == 0) return;
+    ScopedTimer t(context_->stats(), "transfer/read");
+    cl_check(clEnqueueReadBuffer(context_->queue(), mem_, CL_TRUE, offset * sizeof(T),
+                                 count * sizeof(T), out, 0, nullptr, nullptr),
+             "clEnqueueReadBuffer");
+  }
+  std::vector<T> read() const {
+    std::vector<T> out(count_);
+    read(out.data(), count_);
+    return out;
+  }
+  void fill(const T& value) {
+    if (count_ == 0) return;
+    cl_check(clEnqueueFillBuffer(context_->queue(), mem_, &value, sizeof(T), 0, count_ * sizeof(T),
+                                 0, nullptr, nullptr),
+             "clEnqueueFillBuffer");
+  }
+
+ private:
+  Context* context_ = nullptr;
+  cl_mem mem_ = nullptr;
+  size_t count_ = 0;
+};
+
+// Build options the engine always passes (OpenCL C 1.2: what PoCL and every vendor support).
+std::string program_build_options(const Defines& defines);
+
+}  // namespace gdr

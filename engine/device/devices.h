@@ -1,0 +1,34 @@
+// Enumerating OpenCL platforms and devices, and choosing one from a user's selector.
+#pragma once
+#include <CL/cl.h>
+
+#include <string>
+#include <vector>
+
+namespace gdr {
+
+struct DeviceInfo {
+  int index = 0;  // position in list_devices(), as --list-devices prints it
+  cl_platform_id platform = nullptr;
+  cl_device_id device = nullptr;
+  std::string platform_name;
+  std::string name;
+  std::string type;  // "cpu", "gpu", "accelerator" or "other"
+  std::string driver_version;
+  std::string opencl_c_version;
+  cl_uint compute_units = 0;
+  cl_ulong global_memory = 0;
+};
+
+// All devices of all platforms; an empty list when there is no OpenCL platform at all.
+std::vector<DeviceInfo> list_devices();
+
+// One line per device: index, platform, name, type, compute units, OpenCL C, memory.
+std::string format_device_list(const std::vector<DeviceInfo>& devices);
+
+// Selector: empty (then env GDR_DEVICE, then the first GPU, then the first CPU), an index,
+// "cpu"/"gpu", or a case-insensitive substring of the device or platform name.
+// Throws DeviceError listing the devices that exist when nothing matches.
+DeviceInfo select_device(const std::string& selector);
+
+}  // namespace gdr

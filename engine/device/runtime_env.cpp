@@ -1,0 +1,60 @@
+#include "device/runtime_env.h"
+
+#include <tbb/global_control.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "util/cpus.h"
+
+namespace gdr {
+namespace {
+
+int g_threads = 0;
+std::unique_ptr<tbb::global_control> g_tbb_limit;
+
+void set_env_default(const char* name, const std::string& value) {
+  if (!std::getenv(name)) setenv(name, value.c_str(), 0);
+}
+
+// PoCL needs a writable cache folder; HOME may be read-only or missing under CI.
+std::string default_pocl_cache_dir() {
+  namespace fs = std::filesystem;
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const char* home = std::getenv("HOME");
+  fs::path base = xdg ? fs::path(xdg) : home ? fs::path(home) / ".cache" : fs::temp_directory_path();
+  fs::path dir = base / "gdrender" / "pocl";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) {
+    dir = fs::temp_directory_path() / "gdrender-pocl-cache";
+    fs::create_directories(dir, ec);
+  }
+  return dir.string();
+}
+
+}  // namespace
+
+void configure_runtime(int threads) {
+  static std::once_flag once;
+  std::call_once(once, [threads] {
+    int cpus = usable_cpu_count();
+    g_threads = threads > 0 ? threads : cpus;
+    set_env_default("POCL_CACHE_DIR", default_pocl_cache_dir());
+    // PoCL's pthread device reads one or the other depending on its version.
+    set_env_default("POCL_MAX_PTHREAD_COUNT", std::to_string(g_threads));
+    set_env_default("POCL_CPU_MAX_CU_NUM", std::to_string(g_threads));
+    g_tbb_limit = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, static_cast<size_t>(g_threads));
+    OIIO::attribute("threads", g_threads);
+  });
+}
+
+int runtime_threads() { return g_threads > 0 ? g_threads : usable_cpu_count(); }
+
+}  // namespace gdr

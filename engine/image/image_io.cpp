@@ -1,0 +1,97 @@
+#include "image/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+
+#include "image/atomic_file.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace gdr {
+namespace {
+
+float srgb_encode(float linear) {
+  linear = std::clamp(linear, 0.0f, 1.0f);
+  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* data) {
+  write_file_atomically(path, [&](const std::string& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp);
+    if (!out) throw Error("cannot write " + path + ": " + OIIO::geterror());
+    if (!out->open(tmp, spec) || !out->write_image(type, data) || !out->close()) {
+      throw Error("cannot write " + path + ": " + out->geterror());
+    }
+  });
+}
+
+Image checked_copy(const Image& image, const std::string& path) {
+  Image copy = image;
+  if (size_t n = sanitize_nonfinite(copy)) {
+    log::warn(path, ": ", n, " non-finite values replaced by 0");
+  }
+  return copy;
+}
+
+}  // namespace
+
+size_t sanitize_nonfinite(Image& image) {
+  size_t n = 0;
+  for (float& v : image.pixels) {
+    if (!std::isfinite(v)) {
+      v = 0.0f;
+      ++n;
+    }
+  }
+  return n;
+}
+
+void write_exr(const std::string& path, const Image& image) {
+  Image clean = checked_copy(image, path);
+  OIIO::ImageSpec spec(clean.width, clean.height, static_cast<int>(clean.channel_count()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = clean.channels;
+  spec.attribute("compression", "zip");
+  spec.attribute("Software", "gdrender " GDR_VERSION);
+  write_with_oiio(path, spec, OIIO::TypeDesc::FLOAT, clean.pixels.data());
+}
+
+void write_png(const std::string& path, const Image& image, float exposure_stops) {
+  std::vector<float> rgb = image.rgb_layer("");
+  float scale = std::exp2(exposure_stops);
+  std::vector<uint8_t> bytes(rgb.size());
+  for (size_t i = 0; i < rgb.size(); ++i) {
+    float v = std::isfinite(rgb[i]) ? rgb[i] * scale : 0.0f;
+    bytes[i] = static_cast<uint8_t>(std::lround(srgb_encode(v) * 255.0f));
+  }
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  write_with_oiio(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+}
+
+void write_image(const std::string& path, const Image& image) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext == ".exr") {
+    write_exr(path, image);
+  } else {
+    write_png(path, image);
+  }
+}
+
+Image read_image(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw Error(path + ": cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  Image image(spec.width, spec.height, spec.channelnames);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+    throw Error(path + ": cannot read image: " + in->geterror());
+  }
+  in->close();
+  return image;
+}
+
+}  // namespace gdr
