@@ -1,9 +1,19 @@
 #include "app/commands.h"
 
-#include <cstdio>
+#include <unistd.h>
 
+#include <cstdio>
+#include <filesystem>
+
+#include "accel/embree_scene.h"
+#include "app/reconstruct_command.h"
+#include "app/render_command.h"
+#include "device/context.h"
 #include "device/devices.h"
+#include "scene/describe_scene.h"
+#include "scene/load_scene.h"
 #include "util/error.h"
+#include "util/log.h"
 
 namespace gdr {
 
@@ -14,9 +24,36 @@ int list_devices_command() {
   return 0;
 }
 
+namespace {
+
+int info_command(const Options& o) {
+  DeviceInfo device = select_device(o.device);
+  LoadOptions load;
+  load.defines = o.defines;
+  load.strict = o.strict;
+  load.glossy_threshold = o.shift_threshold;
+  Scene scene = load_scene(o.info_scene, load);
+  std::printf("%s", describe_scene(scene).c_str());
+  std::printf("device: [%d] %s (%s)\n", device.index, device.name.c_str(), device.platform_name.c_str());
+  return 0;
+}
+
+}  // namespace
+
 int run_command(const Options& options) {
   if (options.list_devices) return list_devices_command();
-  throw Error("this command is not available in this build");
+  if (!options.info_scene.empty()) return info_command(options);
+  if (!options.reconstruct.empty()) {
+    Stats stats;
+    Context ctx(select_device(options.device), &stats);
+    std::string out = options.output.empty()
+                          ? std::filesystem::path(options.reconstruct).stem().string() + "-recon.exr"
+                          : options.output;
+    int code = reconstruct_command(options.reconstruct, out, options.recon, options.alpha, ctx, &stats);
+    if (!options.stats_path.empty()) stats.write_json(options.stats_path);
+    return code;
+  }
+  return render_command(options);
 }
 
 }  // namespace gdr

@@ -162,6 +162,32 @@ class Buffer {
     read(out.data(), count_);
     return out;
   }
+  // Host access to the first `count` elements while the returned view lives. On CPU devices
+  // with CL_MEM_ALLOC_HOST_PTR buffers this is zero-copy: the host works on the device memory.
+  class Mapping {
+   public:
+    Mapping(const Buffer& b, T* data) : buffer_(&b), data_(data) {}
+    ~Mapping() {
+      if (data_) clEnqueueUnmapMemObject(buffer_->context_->queue(), buffer_->mem_, data_, 0, nullptr, nullptr);
+    }
+    Mapping(const Mapping&) = delete;
+    Mapping& operator=(const Mapping&) = delete;
+    T* data() const { return data_; }
+    T& operator[](size_t i) const { return data_[i]; }
+
+   private:
+    const Buffer* buffer_;
+    T* data_;
+  };
+  Mapping map(size_t count, cl_map_flags flags = CL_MAP_READ | CL_MAP_WRITE) const {
+    ScopedTimer t(context_->stats(), "transfer/map");
+    cl_int err = CL_SUCCESS;
+    void* p = clEnqueueMapBuffer(context_->queue(), mem_, CL_TRUE, flags, 0, sizeof(T) * (count ? count : 1), 0,
+                                 nullptr, nullptr, &err);
+    cl_check(err, "clEnqueueMapBuffer");
+    return Mapping(*this, static_cast<T*>(p));
+  }
+
   void fill(const T& value) {
     if (count_ == 0) return;
     cl_check(clEnqueueFillBuffer(context_->queue(), mem_, &value, sizeof(T), 0, count_ * sizeof(T),

@@ -1,0 +1,44 @@
+#include "integrators/device_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "integrators/light_distribution.h"
+
+namespace gdr {
+
+DeviceScene::DeviceScene(Context& ctx, const Scene& s)
+    : triangles_(ctx, s.triangles, CL_MEM_READ_ONLY),
+      positions_(ctx, s.positions, CL_MEM_READ_ONLY),
+      normals_(ctx, s.normals, CL_MEM_READ_ONLY),
+      uvs_(ctx, s.uvs, CL_MEM_READ_ONLY),
+      shapes_(ctx, s.shapes, CL_MEM_READ_ONLY),
+      materials_(ctx, s.materials, CL_MEM_READ_ONLY),
+      textures_(ctx, s.textures, CL_MEM_READ_ONLY),
+      texels_(ctx, s.texels, CL_MEM_READ_ONLY),
+      lights_(ctx, s.lights, CL_MEM_READ_ONLY),
+      light_cdf_(ctx, light_selection_cdf(s), CL_MEM_READ_ONLY),
+      camera_(ctx, std::vector<GdrCamera>{s.camera}, CL_MEM_READ_ONLY),
+      light_count_(static_cast<int>(s.lights.size())) {
+  for (size_t i = 0; i < s.lights.size(); ++i) {
+    if (s.lights[i].type == LIGHT_CONSTANT || s.lights[i].type == LIGHT_ENVMAP) env_light_ = static_cast<int>(i);
+  }
+  float extent = 0;
+  for (int a = 0; a < 3; ++a) extent = std::max(extent, s.bounds_max[a] - s.bounds_min[a]);
+  scene_radius_ = std::max(0.5f * std::sqrt(3.0f) * extent, 1e-6f);
+}
+
+void DeviceScene::set_args(Kernel& k, cl_uint first) const {
+  k.set_arg(first + 0, triangles_);
+  k.set_arg(first + 1, positions_);
+  k.set_arg(first + 2, normals_);
+  k.set_arg(first + 3, uvs_);
+  k.set_arg(first + 4, shapes_);
+  k.set_arg(first + 5, materials_);
+  k.set_arg(first + 6, textures_);
+  k.set_arg(first + 7, texels_);
+  k.set_arg(first + 8, lights_);
+  k.set_arg(first + 9, light_cdf_);
+}
+
+}  // namespace gdr

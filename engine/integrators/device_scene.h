@@ -1,0 +1,40 @@
+// The scene's arrays on the OpenCL device, in the order of SCENE_DATA_ARGS
+// (kernels/scene/scene_data.h), plus what the host knows about lights for the kernels.
+#pragma once
+#include <vector>
+
+#include "device/context.h"
+#include "scene/scene.h"
+
+namespace gdr {
+
+class DeviceScene {
+ public:
+  DeviceScene(Context& context, const Scene& scene);
+
+  // Sets the SCENE_DATA_ARGS of `kernel` starting at argument `first`.
+  void set_args(Kernel& kernel, cl_uint first) const;
+
+  int light_count() const { return light_count_; }
+  int env_light() const { return env_light_; }
+  float scene_radius() const { return scene_radius_; }
+  const Buffer<GdrCamera>& camera() const { return camera_; }
+
+ private:
+  Buffer<GdrTriangle> triangles_;
+  Buffer<Vec4> positions_;
+  Buffer<Vec4> normals_;
+  Buffer<float> uvs_;
+  Buffer<GdrShape> shapes_;
+  Buffer<GdrMaterial> materials_;
+  Buffer<GdrTexture> textures_;
+  Buffer<Vec4> texels_;
+  Buffer<GdrLight> lights_;
+  Buffer<float> light_cdf_;
+  Buffer<GdrCamera> camera_;
+  int light_count_ = 0;
+  int env_light_ = -1;
+  float scene_radius_ = 1.0f;
+};
+
+}  // namespace gdr

@@ -1,0 +1,17 @@
+// Runs an integrator's passes until the sample count or the time budget is reached, shows a
+// progress line on a terminal, and stops early on SIGINT (the pass in flight finishes, so the
+// image rendered so far is written).
+#pragma once
+#include <functional>
+
+#include "integrators/render_settings.h"
+
+namespace gdr {
+
+// Calls pass(sample_index) for sample_index = 0, 1, ...; returns the number of passes done.
+int run_progressive(const RenderSettings& settings, const std::function<void(int sample)>& pass);
+
+// True once SIGINT arrived during run_progressive (the caller may say the render was cut short).
+bool render_interrupted();
+
+}  // namespace gdr

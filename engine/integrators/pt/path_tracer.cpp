@@ -1,0 +1,117 @@
+#include "integrators/pt/path_tracer.h"
+
+#include <algorithm>
+
+#include "integrators/progressive_loop.h"
+#include "util/log.h"
+
+namespace gdr {
+namespace {
+
+// Paths in flight per chunk: bounds the queues' memory (about 300 bytes a path) while keeping
+// Embree's batches and the kernels' launches large.
+constexpr size_t kMaxPathsInFlight = size_t(1) << 19;
+
+Kernel make_kernel(Context& ctx, const Scene& scene, const char* name) {
+  return ctx.program("pt/pt.cl", pt_kernel_defines(scene))->kernel(name);
+}
+
+}  // namespace
+
+Defines pt_kernel_defines(const Scene& scene) {
+  Defines d = scene.features.kernel_defines();
+  d["GDR_BSDF_SELECTED"] = "1";
+  d["GDR_LIGHTS_SELECTED"] = "1";
+  return d;
+}
+
+PathTracer::PathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree)
+    : ctx_(ctx),
+      scene_(scene),
+      embree_(embree),
+      device_scene_(ctx, scene),
+      generate_(make_kernel(ctx, scene, "pt_generate")),
+      shade_(make_kernel(ctx, scene, "pt_shade")),
+      shadow_(make_kernel(ctx, scene, "pt_shadow")),
+      capacity_(std::min(kMaxPathsInFlight, size_t(scene.camera.width) * scene.camera.height)),
+      rays_{Buffer<GdrRayHit>(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
+            Buffer<GdrRayHit>(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR)},
+      queue_{Buffer<cl_uint>(ctx, capacity_), Buffer<cl_uint>(ctx, capacity_)},
+      paths_(ctx, capacity_),
+      shadow_rays_(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
+      shadow_values_(ctx, capacity_),
+      counters_(ctx, PT_COUNTER_COUNT),
+      film_(ctx, size_t(scene.camera.width) * scene.camera.height) {}
+
+void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
+  Stats* stats = ctx_.stats();
+  GdrPtParams params{};
+  params.seed = settings.seed;
+  params.first_pixel = first;
+  params.pixel_count = count;
+  params.sample = sample;
+  params.max_depth = settings.max_depth;
+  params.rr_depth = settings.rr_depth;
+  params.light_count = device_scene_.light_count();
+  params.env_light = device_scene_.env_light();
+  params.scene_radius = device_scene_.scene_radius();
+  params.strategy = settings.strategy;
+
+  generate_.args(device_scene_.camera(), params, rays_[0], queue_[0], paths_).run(count);
+  cl_uint active = count;
+  int cur = 0;
+  for (int depth = 0; active > 0; ++depth) {
+    {
+      auto rays = rays_[cur].map(active);
+      embree_.intersect(rays.data(), active, depth == 0, depth == 0 ? "camera" : "bounce");
+    }
+    counters_.fill(0u);
+    shade_.args(params, active, rays_[cur], queue_[cur], rays_[1 - cur], queue_[1 - cur], shadow_rays_,
+                shadow_values_, paths_, film_, counters_);
+    device_scene_.set_args(shade_, 11);
+    shade_.run(active);
+    std::vector<cl_uint> counters = counters_.read();
+    cl_uint shadows = counters[PT_COUNTER_SHADOW_RAYS];
+    if (stats && counters[PT_COUNTER_NONFINITE]) stats->add_count("samples/nonfinite_rejected", counters[PT_COUNTER_NONFINITE]);
+    if (shadows > 0) {
+      {
+        auto rays = shadow_rays_.map(shadows);
+        embree_.occluded(rays.data(), shadows, "shadow");
+      }
+      shadow_.args(shadows, shadow_rays_, shadow_values_, film_).run(shadows);
+    }
+    active = counters[PT_COUNTER_NEXT_RAYS];
+    cur = 1 - cur;
+  }
+}
+
+RenderResult PathTracer::render(const RenderSettings& settings) {
+  Stats* stats = ctx_.stats();
+  ScopedTimer timer(stats, "render/trace");
+  const uint32_t pixels = uint32_t(scene_.camera.width) * scene_.camera.height;
+  film_.fill(Vec4{});
+  RenderResult result;
+  result.samples = run_progressive(settings, [&](int sample) {
+    for (uint32_t first = 0; first < pixels; first += uint32_t(capacity_)) {
+      trace_chunk(settings, uint32_t(sample), first, std::min<uint32_t>(uint32_t(capacity_), pixels - first));
+    }
+  });
+  result.seconds = timer.elapsed();
+  std::vector<Vec4> film = film_.read();
+  std::vector<float> rgb(size_t(pixels) * 3);
+  float scale = result.samples > 0 ? 1.0f / result.samples : 0.0f;
+  for (size_t p = 0; p < pixels; ++p) {
+    rgb[3 * p + 0] = film[p].x * scale;
+    rgb[3 * p + 1] = film[p].y * scale;
+    rgb[3 * p + 2] = film[p].z * scale;
+  }
+  result.image = Image(scene_.camera.width, scene_.camera.height, {});
+  result.image.add_rgb_layer("", rgb);
+  if (stats) {
+    stats->add_count("samples/paths", uint64_t(pixels) * result.samples);
+    stats->set("render/spp", result.samples);
+  }
+  return result;
+}
+
+}  // namespace gdr

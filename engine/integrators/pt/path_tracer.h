@@ -1,0 +1,44 @@
+// The wavefront path tracer (`pt`): the unbiased reference every other integrator is measured
+// against. Kernels generate and shade; Embree intersects the queues on the host in between.
+#pragma once
+#include <memory>
+
+#include "accel/embree_scene.h"
+#include "device/context.h"
+#include "integrators/device_scene.h"
+#include "integrators/render_settings.h"
+#include "scene/scene.h"
+#include "shared/pt_types.h"
+#include "shared/ray_types.h"
+
+namespace gdr {
+
+class PathTracer {
+ public:
+  PathTracer(Context& context, const Scene& scene, EmbreeScene& embree);
+
+  RenderResult render(const RenderSettings& settings);
+
+ private:
+  // Traces one sample for pixels [first, first + count) and adds the radiance into film_.
+  void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
+
+  Context& ctx_;
+  const Scene& scene_;
+  EmbreeScene& embree_;
+  DeviceScene device_scene_;
+  Kernel generate_, shade_, shadow_;
+  size_t capacity_;  // paths in flight at once
+  Buffer<GdrRayHit> rays_[2];
+  Buffer<cl_uint> queue_[2];
+  Buffer<GdrPathState> paths_;
+  Buffer<GdrRay> shadow_rays_;
+  Buffer<Vec4> shadow_values_;
+  Buffer<cl_uint> counters_;
+  Buffer<Vec4> film_;
+};
+
+// The -D defines of the path-tracing kernels for a scene: only its BSDF and light types.
+Defines pt_kernel_defines(const Scene& scene);
+
+}  // namespace gdr

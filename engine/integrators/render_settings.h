@@ -1,0 +1,26 @@
+// What every integrator is asked to do, and what it returns.
+#pragma once
+#include <cstdint>
+#include <optional>
+
+#include "image/image.h"
+
+namespace gdr {
+
+struct RenderSettings {
+  int spp = 16;                        // samples per pixel; 0: until the time budget runs out
+  std::optional<double> time_budget;   // seconds; stops after the pass that crosses it
+  uint32_t seed = 0;
+  int max_depth = 16;                  // Mitsuba's convention: path segments; <= 0 unbounded
+  int rr_depth = 5;                    // bounces before Russian roulette
+  int strategy = 0;                    // PT_STRATEGY_* (kernels/shared/pt_types.h)
+  bool progress = false;               // progress line on stderr
+};
+
+struct RenderResult {
+  Image image;       // R,G,B (and integrator-specific layers)
+  int samples = 0;   // samples per pixel actually taken
+  double seconds = 0;
+};
+
+}  // namespace gdr

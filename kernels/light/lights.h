@@ -1,0 +1,143 @@
+// Emitters: sampling a direction toward a light (next-event estimation), the emission a ray
+// meets, and the solid-angle pdfs MIS needs. Compiled per scene: GDR_LIGHT_<TYPE> selects the
+// emitter types present; with GDR_LIGHTS_SELECTED undefined (tests) all of them are compiled.
+#pragma once
+#include "core/geometry.h"
+#include "scene/scene_data.h"
+#include "scene/surface.h"
+
+#if !defined(GDR_LIGHTS_SELECTED)
+#define GDR_LIGHT_AREA 1
+#define GDR_LIGHT_POINT 1
+#define GDR_LIGHT_SPOT 1
+#define GDR_LIGHT_DIRECTIONAL 1
+#define GDR_LIGHT_CONSTANT 1
+#define GDR_LIGHT_ENVMAP 1
+#endif
+
+typedef struct LightSample {
+  float3 wi;        // unit direction from the shading point toward the light
+  float dist;       // distance to the light point (INFINITY for directional and environment)
+  float3 radiance;  // radiance arriving along -wi (intensity / d^2 for point lights)
+  float pdf;        // solid-angle pdf including the light's selection probability; for delta
+                    // lights the selection probability alone
+  int delta;        // 1 for point, spot, directional
+} LightSample;
+
+inline float light_pmf(const SceneData* s, int index) {
+  return s->light_cdf[index + 1] - s->light_cdf[index];
+}
+
+// Picks a light in proportion to the cdf (binary search).
+inline int light_select(const SceneData* s, float u) {
+  int lo = 0, hi = s->light_count - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (s->light_cdf[mid + 1] <= u) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
+}
+
+// Environment emission seen along world direction `dir` (uv lat-long as Mitsuba's envmap).
+inline float3 environment_radiance(const SceneData* s, __global const GdrLight* l, float3 dir) {
+#if defined(GDR_LIGHT_ENVMAP)
+  if (l->type == LIGHT_ENVMAP) {
+    float3 d = xform_vector(l->to_local, dir);
+    float u = atan2(d.x, -d.z) * (0.5f * GDR_INV_PI);
+    float v = acos(clamp(d.y, -1.0f, 1.0f)) * GDR_INV_PI;
+    // texture_eval flips v for bitmaps (v = 0 at the bottom); the lat-long map starts at the top.
+    return texture_eval(s, l->texture, (float2)(u, 1.0f - v)) * vload3(0, l->radiance);
+  }
+#endif
+  return vload3(0, l->radiance);
+}
+
+// Solid-angle pdf of sampling `dir` toward the environment (uniform sphere), selection included.
+inline float environment_pdf(const SceneData* s) {
+  return s->env_light >= 0 ? light_pmf(s, s->env_light) * GDR_INV_4PI : 0.0f;
+}
+
+// Emission of area light `index` toward `wo` (unit, pointing away from the surface with normal ng).
+inline float3 area_radiance(const SceneData* s, int index, float3 ng, float3 wo) {
+  return dot(ng, wo) > 0.0f ? vload3(0, s->lights[index].radiance) : (float3)(0.0f);
+}
+
+// Solid-angle pdf with which light sampling picks the point hit on triangle light `index`.
+inline float area_pdf(const SceneData* s, int index, float area, float dist, float cos_light) {
+  if (cos_light <= 0.0f || area <= 0.0f) return 0.0f;
+  return light_pmf(s, index) * dist * dist / (cos_light * area);
+}
+
+// Samples light `index` as seen from p. Returns 0 when the light cannot contribute.
+inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
+  __global const GdrLight* l = &s->lights[index];
+  float pmf = light_pmf(s, index);
+  ls->delta = 0;
+  switch (l->type) {
+#if defined(GDR_LIGHT_AREA)
+    case LIGHT_AREA: {
+      GdrTriangle tri = s->triangles[l->triangle];
+      float3 p0 = s->positions[tri.v[0]].xyz, p1 = s->positions[tri.v[1]].xyz, p2 = s->positions[tri.v[2]].xyz;
+      float2 b = sample_triangle_barycentrics(u);
+      float3 q = (1.0f - b.x - b.y) * p0 + b.x * p1 + b.y * p2;
+      Surface su = surface_at(s, (uint)l->triangle, b.x, b.y);
+      float3 d = q - p;
+      float dist = length(d);
+      if (!(dist > 0.0f)) return 0;
+      ls->wi = d / dist;
+      ls->dist = dist;
+      float cos_light = dot(su.ng, -ls->wi);
+      ls->radiance = area_radiance(s, index, su.ng, -ls->wi);
+      ls->pdf = area_pdf(s, index, su.area, dist, cos_light);
+      return ls->pdf > 0.0f && isfinite(ls->pdf);
+    }
+#endif
+#if defined(GDR_LIGHT_POINT) || defined(GDR_LIGHT_SPOT)
+    case LIGHT_POINT:
+    case LIGHT_SPOT: {
+      float3 d = vload3(0, l->position) - p;
+      float dist2 = dot(d, d);
+      if (!(dist2 > 0.0f)) return 0;
+      float dist = sqrt(dist2);
+      ls->wi = d / dist;
+      ls->dist = dist;
+      float falloff = 1.0f;
+      if (l->type == LIGHT_SPOT) {
+        float cos_theta = dot(-ls->wi, vload3(0, l->direction));
+        if (cos_theta <= l->cos_cutoff) return 0;
+        if (cos_theta < l->cos_falloff) {
+          // Mitsuba's spot: linear in angle between the beam width and the cutoff.
+          float cutoff = acos(l->cos_cutoff), beam = acos(l->cos_falloff);
+          float angle = acos(clamp(cos_theta, -1.0f, 1.0f));
+          falloff = cutoff > beam ? (cutoff - angle) / (cutoff - beam) : 0.0f;
+        }
+      }
+      ls->radiance = vload3(0, l->radiance) * (falloff / dist2);
+      ls->pdf = pmf;
+      ls->delta = 1;
+      return 1;
+    }
+#endif
+#if defined(GDR_LIGHT_DIRECTIONAL)
+    case LIGHT_DIRECTIONAL:
+      ls->wi = -vload3(0, l->direction);
+      ls->dist = INFINITY;
+      ls->radiance = vload3(0, l->radiance);
+      ls->pdf = pmf;
+      ls->delta = 1;
+      return 1;
+#endif
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+    case LIGHT_CONSTANT:
+    case LIGHT_ENVMAP:
+      ls->wi = sample_uniform_sphere(u);
+      ls->dist = INFINITY;
+      ls->radiance = environment_radiance(s, l, ls->wi);
+      ls->pdf = pmf * GDR_INV_4PI;
+      return 1;
+#endif
+    default:
+      return 0;
+  }
+}

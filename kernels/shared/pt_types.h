@@ -1,0 +1,38 @@
+// State of the wavefront path tracer, shared by its kernels and the host loop.
+#pragma once
+
+#define PATH_FLAG_SPECULAR 1  // the last bounce sampled a delta lobe (no MIS for emission hit)
+
+typedef struct GdrPathState {
+  float throughput[3];
+  float bsdf_pdf;      // solid-angle pdf of the last BSDF sample (for MIS of emission hits)
+  unsigned int pixel;  // y * width + x
+  unsigned int sample; // sample index of this pixel
+  int depth;           // number of bounces so far (0 at the camera vertex)
+  int flags;           // PATH_FLAG_*
+} GdrPathState;
+
+// Per-launch parameters of the path tracer kernels.
+typedef struct GdrPtParams {
+  unsigned int seed;
+  unsigned int first_pixel;  // the queue's slot i traces pixel first_pixel + i
+  unsigned int pixel_count;  // slots in this pass
+  unsigned int sample;       // sample index of the pass
+  int max_depth;             // longest path in segments (camera vertex excluded); <=0: unbounded
+  int rr_depth;              // bounces before Russian roulette starts
+  int light_count;
+  int env_light;             // index of the environment light, or -1
+  float scene_radius;
+  int strategy;              // PT_STRATEGY_*
+  int pad0, pad1;
+} GdrPtParams;
+
+#define PT_STRATEGY_MIS 0    // BSDF and light sampling combined by the power heuristic
+#define PT_STRATEGY_BSDF 1   // BSDF sampling only
+#define PT_STRATEGY_LIGHT 2  // light sampling only (emission seen through delta bounces kept)
+
+// Counters the kernels increment (atomic_inc), read after each pass.
+#define PT_COUNTER_NEXT_RAYS 0    // rays written for the next bounce
+#define PT_COUNTER_SHADOW_RAYS 1  // shadow rays written
+#define PT_COUNTER_NONFINITE 2    // contributions rejected because they were NaN or Inf
+#define PT_COUNTER_COUNT 4

@@ -1,0 +1,68 @@
+// BSDF-only and light-only sampling converge to the same image as their MIS combination.
+// Each strategy renders K independent runs (seeds 1..K); per 4x4 pixel block, Welch's t-test
+// compares the run means of the luminance. Šidák-corrected so the whole test has a
+// false-positive rate of 1e-3.
+#include <gtest/gtest.h>
+
+#include "scene/load_scene.h"
+#include "support/render.h"
+#include "support/statistics.h"
+
+namespace gdr {
+namespace {
+
+constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4;
+
+// runs[k][block]: the block's mean luminance in run k.
+std::vector<std::vector<double>> block_means(PathTracer& tracer, int width, int height, int strategy) {
+  std::vector<std::vector<double>> runs;
+  for (int k = 0; k < kRuns; ++k) {
+    RenderSettings s;
+    s.spp = kSpp;
+    s.seed = 1 + k;
+    s.max_depth = 6;
+    s.strategy = strategy;
+    std::vector<float> rgb = tracer.render(s).image.rgb_layer("");
+    std::vector<double> blocks((width / kBlock) * (height / kBlock), 0.0);
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const float* c = &rgb[3 * (y * width + x)];
+        blocks[(y / kBlock) * (width / kBlock) + x / kBlock] += 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+      }
+    }
+    runs.push_back(blocks);
+  }
+  return runs;
+}
+
+void expect_same_expectation(const std::string& scene_file) {
+  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
+  // A small film of the same aspect (the field of view is unchanged), whole blocks only.
+  const int width = kWidth;
+  const int height = std::max(kBlock, (kWidth * scene.camera.height / scene.camera.width) / kBlock * kBlock);
+  scene.camera.width = width;
+  scene.camera.height = height;
+  EmbreeScene embree(scene, BuildQuality::Low);
+  PathTracer tracer(test::default_context(), scene, embree);
+  auto mis = block_means(tracer, width, height, PT_STRATEGY_MIS);
+  auto bsdf = block_means(tracer, width, height, PT_STRATEGY_BSDF);
+  auto light = block_means(tracer, width, height, PT_STRATEGY_LIGHT);
+  const int blocks = static_cast<int>(mis[0].size());
+  const double alpha = test::sidak(1e-3, 2 * blocks);
+  for (int b = 0; b < blocks; ++b) {
+    std::vector<double> m, f, l;
+    for (int k = 0; k < kRuns; ++k) {
+      m.push_back(mis[k][b]);
+      f.push_back(bsdf[k][b]);
+      l.push_back(light[k][b]);
+    }
+    EXPECT_GT(test::welch_p(m, f), alpha) << scene_file << " block " << b << ": BSDF sampling differs from MIS";
+    EXPECT_GT(test::welch_p(m, l), alpha) << scene_file << " block " << b << ": light sampling differs from MIS";
+  }
+}
+
+TEST(PathTracerStrategies, CornellBoxAgrees) { expect_same_expectation("cornell-box.xml"); }
+TEST(PathTracerStrategies, GlossyPlatesAgree) { expect_same_expectation("glossy-plates.xml"); }
+
+}  // namespace
+}  // namespace gdr
