@@ -10,6 +10,8 @@
 #include "app/render_command.h"
 #include "device/context.h"
 #include "device/devices.h"
+#include "image/image_io.h"
+#include "image/image_metrics.h"
 #include "scene/describe_scene.h"
 #include "scene/load_scene.h"
 #include "util/error.h"
@@ -38,11 +40,22 @@ int info_command(const Options& o) {
   return 0;
 }
 
+int compare_command(const Options& o) {
+  Image a = read_image(o.compare[0]), b = read_image(o.compare[1]);
+  ImageError e = compare_images(a, b);
+  nlohmann::json j = {{"relmse", e.rel_mse}, {"mse", e.mse}, {"mape", e.mape}, {"values", e.values},
+                      {"skipped_nonfinite", e.skipped}};
+  std::printf("%s\n", j.dump().c_str());
+  if (!o.error_image.empty()) write_png(o.error_image, error_image(a, b));
+  return 0;
+}
+
 }  // namespace
 
 int run_command(const Options& options) {
   if (options.list_devices) return list_devices_command();
   if (!options.info_scene.empty()) return info_command(options);
+  if (!options.compare.empty()) return compare_command(options);
   if (!options.reconstruct.empty()) {
     Stats stats;
     Context ctx(select_device(options.device), &stats);

@@ -16,6 +16,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--reconstruct", o.reconstruct,
                  "Reconstruct a saved gradient-domain render (EXR with primal/dx/dy layers)")
       ->check(CLI::ExistingFile);
+  app.add_option("--compare", o.compare, "Print relMSE, MSE and MAPE of image A against reference B as JSON")
+      ->expected(2)
+      ->check(CLI::ExistingFile);
+  app.add_option("--error-image", o.error_image, "With --compare: write a false-colour relMSE image (PNG)");
   app.add_option("-o,--output", o.output, "Output image (.exr; a tone-mapped .png is written beside it)");
   app.add_option("--integrator", o.integrator, "pt | gpt (default: the scene's integrator, else pt)");
   app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::PositiveNumber);
@@ -57,7 +61,8 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     }
     o.defines[d.substr(0, eq)] = d.substr(eq + 1);
   }
-  if (!o.list_devices && o.info_scene.empty() && o.reconstruct.empty() && o.scene.empty()) {
+  if (!o.list_devices && o.info_scene.empty() && o.reconstruct.empty() && o.scene.empty() &&
+      o.compare.empty()) {
     std::cerr << "gdrender: nothing to do: give a scene to render, --info SCENE, --reconstruct IN.exr "
                  "or --list-devices (see --help)\n";
     return 2;

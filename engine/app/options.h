@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gdr {
 
@@ -12,6 +13,8 @@ struct Options {
   bool list_devices = false;
   std::string info_scene;   // --info SCENE
   std::string reconstruct;  // --reconstruct IN.exr
+  std::vector<std::string> compare;  // --compare A.exr REFERENCE.exr
+  std::string error_image;            // --error-image: false-colour relMSE PNG of --compare
   std::string scene;        // positional: render this scene
 
   std::string output;  // -o; default: <scene stem>.exr in the current folder

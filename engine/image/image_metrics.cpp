@@ -1,0 +1,79 @@
+#include "image/image_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+constexpr double kEps = 1e-2;
+
+void check_sizes(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) {
+    throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
+                std::to_string(b.width) + "x" + std::to_string(b.height));
+  }
+}
+
+// A five-stop approximation of the viridis ramp, t in [0, 1].
+void ramp(double t, float* rgb) {
+  static const float stops[5][3] = {
+      {0.267f, 0.005f, 0.329f}, {0.231f, 0.322f, 0.545f}, {0.129f, 0.569f, 0.549f}, {0.369f, 0.788f, 0.384f}, {0.993f, 0.906f, 0.144f}};
+  t = std::clamp(t, 0.0, 1.0) * 4;
+  int i = std::min(3, static_cast<int>(t));
+  float f = static_cast<float>(t - i);
+  for (int c = 0; c < 3; ++c) {
+    // The stops are display (sRGB) values; the image is linear and gets sRGB-encoded on output.
+    double s = stops[i][c] * (1 - f) + stops[i + 1][c] * f;
+    rgb[c] = static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
+  }
+}
+
+}  // namespace
+
+ImageError compare_images(const Image& a, const Image& b) {
+  check_sizes(a, b);
+  std::vector<float> pa = a.rgb_layer(""), pb = b.rgb_layer("");
+  ImageError e;
+  for (size_t i = 0; i < pa.size(); ++i) {
+    double x = pa[i], y = pb[i];
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      ++e.skipped;
+      continue;
+    }
+    double d = x - y;
+    e.mse += d * d;
+    e.rel_mse += d * d / (y * y + kEps);
+    e.mape += std::fabs(d) / (std::fabs(y) + kEps);
+    ++e.values;
+  }
+  if (e.values > 0) {
+    e.mse /= e.values;
+    e.rel_mse /= e.values;
+    e.mape /= e.values;
+  }
+  return e;
+}
+
+Image error_image(const Image& a, const Image& b) {
+  check_sizes(a, b);
+  std::vector<float> pa = a.rgb_layer(""), pb = b.rgb_layer("");
+  std::vector<float> out(pa.size());
+  for (size_t p = 0; p < pa.size() / 3; ++p) {
+    double rel = 0;
+    for (int c = 0; c < 3; ++c) {
+      double x = pa[3 * p + c], y = pb[3 * p + c];
+      double d = std::isfinite(x) && std::isfinite(y) ? x - y : 0.0;
+      rel += d * d / (y * y + kEps) / 3;
+    }
+    double t = (std::log10(std::max(rel, 1e-4)) + 4) / 4;  // 1e-4 -> 0, 1 -> 1
+    ramp(t, &out[3 * p]);
+  }
+  Image img(a.width, a.height, {});
+  img.add_rgb_layer("", out);
+  return img;
+}
+
+}  // namespace gdr
