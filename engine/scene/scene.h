@@ -38,7 +38,7 @@ struct Scene {
   SceneFeatures features;
   std::vector<std::string> warnings;  // unsupported features, each naming element, file and line
 
-  // Bounding sphere of the geometry.
+  // Bounding box of the geometry (world space).
   float bounds_min[3] = {0, 0, 0};
   float bounds_max[3] = {0, 0, 0};
 };

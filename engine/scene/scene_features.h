@@ -3,6 +3,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <vector>
 
 #include "shared/scene_types.h"
 
@@ -18,6 +19,12 @@ struct SceneFeatures {
   bool near_delta_surfaces = false;   // rough BSDFs with alpha below the glossy threshold
   bool delta_lights = false;          // point, spot or directional lights
   bool environment = false;           // constant or envmap emitter
+
+  // The reasons, for describe(): "name (type)" of the materials that make the surfaces delta or
+  // near-delta, and the threshold used.
+  std::vector<std::string> delta_materials;
+  std::vector<std::string> near_delta_materials;
+  float glossy_threshold = 0.001f;
 
   // Specular chains (caustics, S-D-S paths) are possible: enables the manifold machinery.
   bool specular_chains() const { return delta_surfaces || near_delta_surfaces; }

@@ -1,0 +1,90 @@
+#include "scene/load_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/load_context.h"
+#include "util/error.h"
+
+namespace gdr {
+
+void LoadContext::unsupported(const XmlNode& node, const std::string& instead) {
+  if (!reported.insert(&node).second) return;
+  std::string what = node.describe();
+  if (options.strict) {
+    throw InputError(node.file, node.line, "unsupported <" + node.tag + " type=\"" + node.type() + "\">: " + instead);
+  }
+  warn(what + ": " + instead);
+}
+
+namespace {
+
+void read_integrator(LoadContext& ctx, const XmlNode& node) {
+  Props p = ctx.props(node);
+  ctx.scene.integrator = p.type();
+  ctx.scene.max_depth = p.get_int("max_depth", -1);
+}
+
+void compute_bounds(Scene& s) {
+  if (s.positions.empty()) return;
+  float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (const Vec4& p : s.positions) {
+    const float v[3] = {p.x, p.y, p.z};
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], v[k]);
+      hi[k] = std::max(hi[k], v[k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    s.bounds_min[k] = lo[k];
+    s.bounds_max[k] = hi[k];
+  }
+}
+
+// Top-level definitions that only matter when something refers to them.
+bool is_definition(const std::string& tag) { return tag == "bsdf" || tag == "texture"; }
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const LoadOptions& options) {
+  XmlDocument doc = load_xml_document(path, options.defines);
+  Scene scene;
+  scene.path = path;
+  LoadContext ctx(doc, options, scene);
+
+  std::vector<const XmlNode*> emitters;
+  for (const auto& child : doc.root->children) {
+    const XmlNode& node = *child;
+    const std::string& tag = node.tag;
+    if (tag == "integrator") {
+      read_integrator(ctx, node);
+    } else if (tag == "sensor") {
+      load_sensor(ctx, node);
+    } else if (tag == "shape") {
+      load_shape(ctx, node);
+    } else if (tag == "emitter") {
+      emitters.push_back(&node);
+    } else if (is_definition(tag)) {
+      continue;
+    } else if (tag == "medium" || tag == "phase" || tag == "volume") {
+      ctx.unsupported(node, "participating media not supported: ignored");
+    } else {
+      ctx.unsupported(node, "element not supported: ignored");
+    }
+  }
+  compute_bounds(scene);
+  for (const XmlNode* e : emitters) {
+    // Area emitters defined at the top level are used through a shape's <ref>.
+    if (e->type() == "area" && ctx.attached_emitters.count(e)) continue;
+    load_emitter(ctx, *e);
+  }
+  finish_lights(ctx);
+  if (!ctx.has_sensor) default_camera(ctx);
+  if (ctx.degenerate_triangles) {
+    ctx.warn(path + ": " + std::to_string(ctx.degenerate_triangles) + " degenerate (zero-area) triangles kept");
+  }
+  scene.features = compute_scene_features(scene, options.glossy_threshold);
+  return scene;
+}
+
+}  // namespace gdr

@@ -1,0 +1,22 @@
+// Loads a Mitsuba XML scene (the 0.5/0.6 camelCase dialect and the 2/3 snake_case one) into a
+// gdr::Scene. What the renderer cannot reproduce is listed in Scene::warnings (each naming the
+// element, file and line and what was done instead); with `strict` it is an error instead.
+#pragma once
+#include <map>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace gdr {
+
+struct LoadOptions {
+  std::map<std::string, std::string> defines;  // override the scene's <default> values
+  bool strict = false;                         // unsupported features are errors, not warnings
+  float glossy_threshold = 0.001f;             // alpha below which a rough surface is near-delta
+};
+
+// Throws gdr::InputError (file, line, problem) for malformed XML, missing files, bad values,
+// unknown references or names, and invalid meshes; nothing partial is returned.
+Scene load_scene(const std::string& path, const LoadOptions& options = {});
+
+}  // namespace gdr

@@ -1,0 +1,148 @@
+// Mitsuba's .serialized meshes: a sequence of meshes, each a header (uint16 0x041C, uint16
+// version 3 or 4) and a zlib stream (flags, [v4: name], vertex and triangle counts, positions,
+// normals, uvs, colours, uint32 indices), then a table of mesh offsets (uint64 in v4, uint32 in
+// v3) and their count (uint32) at the end of the file. Little endian throughout.
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "scene/mesh.h"
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+constexpr uint16_t kMagic = 0x041C;
+constexpr uint32_t kHasNormals = 0x0001, kHasUvs = 0x0002, kHasColors = 0x0008, kFaceNormals = 0x0010,
+                   kDouble = 0x2000;
+
+template <class T>
+T load_le(const unsigned char* p) {
+  T v = 0;
+  for (size_t i = 0; i < sizeof(T); ++i) v |= static_cast<T>(static_cast<T>(p[i]) << (8 * i));
+  return v;
+}
+
+// Inflates the zlib stream that starts at `data` (no size is stored: read until its end).
+std::vector<unsigned char> inflate_stream(const unsigned char* data, size_t size, const std::string& path) {
+  z_stream zs{};
+  if (inflateInit(&zs) != Z_OK) throw InputError(path, 0, "zlib initialisation failed");
+  zs.next_in = const_cast<unsigned char*>(data);
+  zs.avail_in = static_cast<uInt>(std::min<size_t>(size, 0xFFFFFFFFu));
+  std::vector<unsigned char> out;
+  int ret = Z_OK;
+  while (ret != Z_STREAM_END) {
+    size_t old = out.size();
+    out.resize(old + (1 << 20));
+    zs.next_out = out.data() + old;
+    zs.avail_out = 1 << 20;
+    ret = inflate(&zs, Z_NO_FLUSH);
+    out.resize(old + (1 << 20) - zs.avail_out);
+    if (ret != Z_OK && ret != Z_STREAM_END) {
+      inflateEnd(&zs);
+      throw InputError(path, 0, std::string("corrupt compressed mesh data (zlib: ") + (zs.msg ? zs.msg : "error") + ")");
+    }
+    if (ret == Z_OK && zs.avail_in == 0 && zs.avail_out != 0) {
+      inflateEnd(&zs);
+      throw InputError(path, 0, "truncated compressed mesh data");
+    }
+  }
+  inflateEnd(&zs);
+  return out;
+}
+
+}  // namespace
+
+MeshData read_serialized(const std::string& path, int shape_index) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot read the .serialized file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string bytes = ss.str();
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  size_t size = bytes.size();
+  if (size < 8 || load_le<uint16_t>(data) != kMagic) throw InputError(path, 0, "not a Mitsuba .serialized mesh file");
+  uint16_t version = load_le<uint16_t>(data + 2);
+  if (version != 3 && version != 4) {
+    throw InputError(path, 0, "unsupported .serialized version " + std::to_string(version));
+  }
+  uint32_t count = load_le<uint32_t>(data + size - 4);
+  if (shape_index < 0 || static_cast<uint32_t>(shape_index) >= count) {
+    throw InputError(path, 0, "shape_index " + std::to_string(shape_index) + " out of range (the file holds " +
+                                  std::to_string(count) + " meshes)");
+  }
+  size_t entry = version == 4 ? 8 : 4;
+  if (size < 4 + entry * count) throw InputError(path, 0, "truncated mesh offset table");
+  size_t at = size - 4 - entry * (count - static_cast<size_t>(shape_index));
+  uint64_t offset = version == 4 ? load_le<uint64_t>(data + at) : load_le<uint32_t>(data + at);
+  if (offset + 4 > size || load_le<uint16_t>(data + offset) != kMagic) {
+    throw InputError(path, 0, "bad offset for mesh " + std::to_string(shape_index));
+  }
+  std::vector<unsigned char> raw = inflate_stream(data + offset + 4, size - offset - 4, path);
+
+  size_t pos = 0;
+  auto need = [&](size_t n) {
+    if (pos + n > raw.size()) throw InputError(path, 0, "truncated mesh " + std::to_string(shape_index));
+  };
+  need(4);
+  uint32_t flags = load_le<uint32_t>(raw.data());
+  pos = 4;
+  if (version == 4) {
+    while (pos < raw.size() && raw[pos] != 0) ++pos;
+    need(1);
+    ++pos;
+  }
+  need(16);
+  uint64_t nv = load_le<uint64_t>(raw.data() + pos);
+  uint64_t nt = load_le<uint64_t>(raw.data() + pos + 8);
+  pos += 16;
+  size_t scalar = (flags & kDouble) ? 8 : 4;
+  auto read_scalars = [&](size_t n, std::vector<float>& dst) {
+    need(n * scalar);
+    dst.resize(n);
+    for (size_t i = 0; i < n; ++i, pos += scalar) {
+      if (scalar == 8) {
+        uint64_t b = load_le<uint64_t>(raw.data() + pos);
+        double d;
+        std::memcpy(&d, &b, 8);
+        dst[i] = static_cast<float>(d);
+      } else {
+        uint32_t b = load_le<uint32_t>(raw.data() + pos);
+        std::memcpy(&dst[i], &b, 4);
+      }
+    }
+  };
+  if (nv > (1ull << 31) || nt > (1ull << 31)) throw InputError(path, 0, "mesh too large");
+  MeshData mesh;
+  read_scalars(3 * nv, mesh.positions);
+  if (flags & kHasNormals) read_scalars(3 * nv, mesh.normals);
+  if (flags & kHasUvs) read_scalars(2 * nv, mesh.uvs);
+  if (flags & kHasColors) {
+    std::vector<float> colors;
+    read_scalars(3 * nv, colors);
+  }
+  if (flags & kFaceNormals) mesh.normals.clear();
+  need(12 * nt);
+  mesh.indices.resize(3 * nt);
+  for (size_t i = 0; i < 3 * nt; ++i, pos += 4) {
+    uint32_t idx = load_le<uint32_t>(raw.data() + pos);
+    if (idx >= nv) {
+      throw InputError(path, 0, "mesh " + std::to_string(shape_index) + ": triangle " + std::to_string(i / 3) +
+                                    " refers to vertex " + std::to_string(idx) + " of " + std::to_string(nv));
+    }
+    mesh.indices[i] = static_cast<int>(idx);
+  }
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (!std::isfinite(mesh.positions[i])) {
+      throw InputError(path, 0, "mesh " + std::to_string(shape_index) + ": vertex " + std::to_string(i / 3) +
+                                    " has a non-finite coordinate");
+    }
+  }
+  return mesh;
+}
+
+}  // namespace gdr

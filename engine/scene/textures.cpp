@@ -1,0 +1,107 @@
+// Textures: `bitmap` (through OpenImageIO, stored as linear RGB texels) and `checkerboard`.
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+#include "scene/load_context.h"
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+void identity_uv(GdrTexture& t) {
+  const float id[6] = {1, 0, 0, 0, 1, 0};
+  for (int i = 0; i < 6; ++i) t.uv_transform[i] = id[i];
+}
+
+// to_uv (Mitsuba 2/3) or uscale/vscale/uoffset/voffset (Mitsuba 0.x): u' = m u + ..., 2D affine.
+void read_uv_transform(const Props& p, GdrTexture& t) {
+  Mat4d m = p.get_transform("to_uv");
+  double us = p.get_float("uscale", 1.0), vs = p.get_float("vscale", 1.0);
+  double uo = p.get_float("uoffset", 0.0), vo = p.get_float("voffset", 0.0);
+  Mat4d legacy = Mat4d::translate({uo, vo, 0}) * Mat4d::scale({us, vs, 1});
+  m = m * legacy;
+  const double v[6] = {m.m[0][0], m.m[0][1], m.m[0][3], m.m[1][0], m.m[1][1], m.m[1][3]};
+  for (int i = 0; i < 6; ++i) t.uv_transform[i] = static_cast<float>(v[i]);
+}
+
+void set4(float* dst, Rgb c) {
+  dst[0] = c.r;
+  dst[1] = c.g;
+  dst[2] = c.b;
+  dst[3] = 0;
+}
+
+}  // namespace
+
+int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw InputError(from.file, from.line, "cannot read image '" + path + "': " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  int w = spec.width, h = spec.height, nc = spec.nchannels;
+  if (w <= 0 || h <= 0 || nc <= 0) throw InputError(from.file, from.line, "empty image '" + path + "'");
+  std::vector<float> pixels(static_cast<size_t>(w) * h * nc);
+  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, pixels.data())) {
+    throw InputError(from.file, from.line, "cannot read image '" + path + "': " + in->geterror());
+  }
+  // 8- and 16-bit images hold sRGB-encoded values unless the scene says they are raw data.
+  bool decode = !raw && (spec.format.basetype == OIIO::TypeDesc::UINT8 ||
+                         spec.format.basetype == OIIO::TypeDesc::UINT16);
+  in->close();
+
+  GdrTexture t{};
+  t.type = TEXTURE_BITMAP;
+  t.width = w;
+  t.height = h;
+  t.offset = static_cast<int>(ctx.scene.texels.size());
+  t.bilinear = bilinear ? 1 : 0;
+  identity_uv(t);
+  size_t non_finite = 0;
+  for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
+    const float* px = &pixels[i * nc];
+    float c[3] = {px[0], nc >= 3 ? px[1] : px[0], nc >= 3 ? px[2] : px[0]};
+    for (float& v : c) {
+      if (!std::isfinite(v)) {
+        v = 0.0f;
+        ++non_finite;
+      }
+      if (decode) v = srgb_to_linear(v);
+    }
+    ctx.scene.texels.push_back({c[0], c[1], c[2], nc == 4 || nc == 2 ? px[nc - 1] : 1.0f});
+  }
+  if (non_finite) ctx.warn(path + ": " + std::to_string(non_finite) + " non-finite texel values replaced by 0");
+  ctx.scene.textures.push_back(t);
+  return static_cast<int>(ctx.scene.textures.size()) - 1;
+}
+
+int load_texture(LoadContext& ctx, const XmlNode& node) {
+  auto it = ctx.texture_of.find(&node);
+  if (it != ctx.texture_of.end()) return it->second;
+  Props p = ctx.props(node);
+  std::string type = p.type();
+  int index = -1;
+  if (type == "bitmap") {
+    const XmlNode* fn = p.find("filename");
+    if (!fn) throw InputError(node.file, node.line, "<texture type=\"bitmap\"> needs a filename");
+    std::string path = ctx.doc.resolve(p.get_string("filename", ""), *fn);
+    std::string filter = p.get_string("filter_type", "bilinear");
+    index = load_image_texture(ctx, path, *fn, p.get_bool("raw", false), filter != "nearest");
+    read_uv_transform(p, ctx.scene.textures[index]);
+  } else if (type == "checkerboard") {
+    GdrTexture t{};
+    t.type = TEXTURE_CHECKERBOARD;
+    t.offset = -1;
+    set4(t.color0, p.get_color("color0", Rgb(0.4f), SpectrumUse::Reflectance));
+    set4(t.color1, p.get_color("color1", Rgb(0.2f), SpectrumUse::Reflectance));
+    identity_uv(t);
+    read_uv_transform(p, t);
+    ctx.scene.textures.push_back(t);
+    index = static_cast<int>(ctx.scene.textures.size()) - 1;
+  } else {
+    ctx.unsupported(node, "texture type not supported: using a constant 0.5");
+  }
+  ctx.texture_of[&node] = index;
+  return index;
+}
+
+}  // namespace gdr

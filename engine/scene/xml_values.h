@@ -1,0 +1,55 @@
+// Reading plugin properties from the XML tree: <float>, <integer>, <boolean>, <string>, <point>,
+// <vector>, <rgb>, <srgb>, <spectrum>, <blackbody>, <transform>, named <ref>s and nested plugins.
+// Every malformed value is an InputError naming the file, line and attribute.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/spectrum.h"
+#include "scene/transform.h"
+#include "scene/xml_document.h"
+
+namespace gdr {
+
+// Strict number parsing of attribute `attr` of `node` (the whole value must be a number).
+double parse_number(const XmlNode& node, const std::string& attr);
+// A list of numbers separated by commas and/or white space.
+std::vector<double> parse_number_list(const XmlNode& node, const std::string& attr);
+// <point>/<vector>: x/y/z attributes (missing ones 0) or value="x y z".
+Vec3d parse_vec3(const XmlNode& node);
+// <rgb>/<srgb>/<spectrum>/<blackbody>/<float>: the colour as linear RGB.
+Rgb parse_color(const XmlNode& node, SpectrumUse use);
+// <transform>: its operations composed in order (each later one applied after the earlier ones).
+Mat4d parse_transform(const XmlNode& node);
+
+// The properties of one plugin element.
+class Props {
+ public:
+  Props(const XmlNode& node, const XmlDocument& doc) : node_(node), doc_(doc) {}
+  const XmlNode& node() const { return node_; }
+  const XmlDocument& doc() const { return doc_; }
+  std::string type() const { return node_.type(); }
+
+  // The child named `name` (a value element, a nested plugin, or the target of a named <ref>).
+  const XmlNode* find(const std::string& name) const;
+  bool has(const std::string& name) const { return find(name) != nullptr; }
+
+  double get_float(const std::string& name, double fallback) const;
+  int get_int(const std::string& name, int fallback) const;
+  bool get_bool(const std::string& name, bool fallback) const;
+  std::string get_string(const std::string& name, const std::string& fallback) const;
+  Vec3d get_vec3(const std::string& name, Vec3d fallback) const;
+  Mat4d get_transform(const std::string& name) const;  // identity when absent
+  // A colour given as a value; nullptr from texture() when it is a constant.
+  Rgb get_color(const std::string& name, Rgb fallback, SpectrumUse use) const;
+  const XmlNode* texture(const std::string& name) const;
+
+  // Nested plugins with this tag, named or not, <ref>s resolved, in document order.
+  std::vector<const XmlNode*> nested(const std::string& tag) const;
+
+ private:
+  const XmlNode& node_;
+  const XmlDocument& doc_;
+};
+
+}  // namespace gdr
