@@ -1,11 +1,9 @@
 // Geometry used by every stage: affine transforms stored 3x4 row-major, robust ray origins,
-// orthonormal frames, and the elementary direction samplers of the lights.
+// and the elementary samplers of the lights.
 #pragma once
+#include "core/frame.h"
+#include "core/math.h"
 
-#ifndef M_PI_F
-#define M_PI_F 3.14159265358979323846f
-#endif
-#define GDR_INV_PI 0.31830988618379067154f
 #define GDR_INV_4PI 0.07957747154594766788f
 
 inline float3 xform_point(const float* m, float3 p) {
@@ -19,8 +17,6 @@ inline float3 xform_vector(const float* m, float3 v) {
 
 inline float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
 inline float luminance(float3 c) { return 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z; }
-inline int all_finite(float3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
-inline float safe_sqrt(float x) { return sqrt(fmax(x, 0.0f)); }
 
 // Moves a ray origin off the surface along the normal by a few ulps of the position (Wächter and
 // Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems 2019): no
@@ -34,23 +30,6 @@ inline float offset_component(float p, float n) {
 inline float3 offset_ray_origin(float3 p, float3 n) {
   return (float3)(offset_component(p.x, n.x), offset_component(p.y, n.y), offset_component(p.z, n.z));
 }
-
-// Orthonormal basis around unit n (Duff et al. 2017, branchless and without singularities).
-typedef struct Frame {
-  float3 s, t, n;
-} Frame;
-inline Frame frame_from_normal(float3 n) {
-  float sign = copysign(1.0f, n.z);
-  float a = -1.0f / (sign + n.z);
-  float b = n.x * n.y * a;
-  Frame f;
-  f.s = (float3)(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  f.t = (float3)(b, sign + n.y * n.y * a, -n.y);
-  f.n = n;
-  return f;
-}
-inline float3 frame_to_local(const Frame* f, float3 v) { return (float3)(dot(v, f->s), dot(v, f->t), dot(v, f->n)); }
-inline float3 frame_to_world(const Frame* f, float3 v) { return v.x * f->s + v.y * f->t + v.z * f->n; }
 
 inline float3 sample_uniform_sphere(float2 u) {
   float z = 1.0f - 2.0f * u.x;

@@ -44,8 +44,8 @@ inline float3 environment_radiance(const SceneData* s, __global const GdrLight* 
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     float3 d = xform_vector(l->to_local, dir);
-    float u = atan2(d.x, -d.z) * (0.5f * GDR_INV_PI);
-    float v = acos(clamp(d.y, -1.0f, 1.0f)) * GDR_INV_PI;
+    float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
+    float v = acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F;
     // texture_eval flips v for bitmaps (v = 0 at the bottom); the lat-long map starts at the top.
     return texture_eval(s, l->texture, (float2)(u, 1.0f - v)) * vload3(0, l->radiance);
   }

@@ -31,7 +31,7 @@ inline void write_ray(__global GdrRayHit* r, float3 o, float3 d, float tnear, fl
 
 // Adds a finite contribution to a pixel; a NaN or Inf one is counted and dropped.
 inline void film_add(__global float4* film, uint pixel, float3 c, __global uint* counters) {
-  if (!all_finite(c)) {
+  if (!is_finite3(c)) {
     atomic_inc(&counters[PT_COUNTER_NONFINITE]);
     return;
   }
@@ -127,7 +127,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
                   : power_heuristic(ls.pdf, bsdf_pdf(&b, wo_local, wi_local));
         float3 c = beta * f * ls.radiance * (w / ls.pdf);
         if (max3(c) > 0.0f) {
-          if (!all_finite(c)) {
+          if (!is_finite3(c)) {
             atomic_inc(&counters[PT_COUNTER_NONFINITE]);
           } else {
             uint k = atomic_inc(&counters[PT_COUNTER_SHADOW_RAYS]);
@@ -157,7 +157,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
   float3 wi = frame_to_world(&frame, bs.wi);
   if (dot(wi, su.ng) * bs.wi.z <= 0.0f) return;
   beta *= bs.weight;
-  if (!all_finite(beta)) {
+  if (!is_finite3(beta)) {
     atomic_inc(&counters[PT_COUNTER_NONFINITE]);
     return;
   }
