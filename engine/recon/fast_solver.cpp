@@ -1,0 +1,53 @@
+#include "recon/fast_solver.h"
+
+#include <utility>
+
+namespace gdr {
+
+FastSolver::FastSolver(Context& ctx, int width, int height)
+    : dots_(ctx),
+      mg_(ctx, width, height),
+      r_(ctx, size_t(width) * height),
+      p_(ctx, size_t(width) * height),
+      q_(ctx, size_t(width) * height),
+      apply_dot_(ctx.program("recon/operator.cl")->kernel("recon_apply_dot")),
+      residual_(ctx.program("recon/operator.cl")->kernel("recon_residual")),
+      update_xr_dot_(ctx.program("recon/cg.cl")->kernel("cg_update_xr_dot")),
+      update_p_(ctx.program("recon/cg.cl")->kernel("cg_update_p")) {}
+
+SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance) {
+  const int n = sys.pixels(), w = sys.width, h = sys.height;
+  const size_t groups_global = DeviceDots::reduce_global(n);
+  dots_.clear();
+  residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, w, h, r_).run(n);
+  dots_.dot(*sys.b, *sys.b, n, DeviceDots::kBB);
+  dots_.dot(r_, r_, n, DeviceDots::kRR);
+  const cl_float4 bb = dots_.read(DeviceDots::kBB), rr0 = dots_.read(DeviceDots::kRR);
+  SolveOutcome out;
+  out.residual = relative_residual(rr0, bb, rr0);
+  if (out.residual <= tolerance || max_iterations <= 0) return out;
+
+  int rz_old = DeviceDots::kRZ0, rz_new = DeviceDots::kRZ1;
+  Vec4Buffer* z = &mg_.apply(r_);
+  dots_.dot(r_, *z, n, rz_old);
+  p_.fill(cl_float4{{0, 0, 0, 0}});
+  update_p_.args(p_, *z, dots_.scalars(), int(DeviceDots::kZero), int(DeviceDots::kZero), n).run(n);
+  for (int it = 0; it < max_iterations; ++it) {
+    apply_dot_.args(p_, *sys.wp, *sys.wx, *sys.wy, w, h, q_, dots_.partial()).run(groups_global);
+    dots_.sum_partials(n, DeviceDots::kPQ);
+    update_xr_dot_.args(*sys.x, r_, p_, q_, dots_.scalars(), rz_old, int(DeviceDots::kPQ), n,
+                        dots_.partial())
+        .run(groups_global);
+    dots_.sum_partials(n, DeviceDots::kRR);
+    out.iterations = it + 1;
+    out.residual = relative_residual(dots_.read(DeviceDots::kRR), bb, rr0);
+    if (out.residual <= tolerance || it + 1 == max_iterations) break;
+    z = &mg_.apply(r_);
+    dots_.dot(r_, *z, n, rz_new);
+    update_p_.args(p_, *z, dots_.scalars(), rz_new, rz_old, n).run(n);
+    std::swap(rz_old, rz_new);
+  }
+  return out;
+}
+
+}  // namespace gdr
