@@ -9,8 +9,10 @@ class CgSolver {
  public:
   CgSolver(Context& ctx, int width, int height);
   // Improves sys.x in place (warm start) for at most max_iterations; stops early once the
-  // relative residual is <= tolerance (when tolerance > 0).
-  SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance);
+  // relative residual is <= tolerance (when tolerance > 0): |r| / |b|, or |r| / |r0| with
+  // relative_to_start. The outcome's residual is always |r| / |b|.
+  SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                     bool relative_to_start = false);
   DeviceDots& dots() { return dots_; }
 
  private:

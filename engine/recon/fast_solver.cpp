@@ -15,17 +15,21 @@ FastSolver::FastSolver(Context& ctx, int width, int height)
       update_xr_dot_(ctx.program("recon/cg.cl")->kernel("cg_update_xr_dot")),
       update_p_(ctx.program("recon/cg.cl")->kernel("cg_update_p")) {}
 
-SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance) {
+SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                                 bool relative_to_start) {
   const int n = sys.pixels(), w = sys.width, h = sys.height;
   const size_t groups_global = DeviceDots::reduce_global(n);
   dots_.clear();
   residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, w, h, r_).run(n);
   dots_.dot(*sys.b, *sys.b, n, DeviceDots::kBB);
   dots_.dot(r_, r_, n, DeviceDots::kRR);
-  const cl_float4 bb = dots_.read(DeviceDots::kBB), rr0 = dots_.read(DeviceDots::kRR);
+  const cl_float4 rr0 = dots_.read(DeviceDots::kRR);
+  const cl_float4 bb = dots_.read(DeviceDots::kBB);
+  // Stopping is judged against |b|, or for a warm-started IRLS round against its first residual.
+  const cl_float4 ref = relative_to_start ? rr0 : bb;
   SolveOutcome out;
   out.residual = relative_residual(rr0, bb, rr0);
-  if (out.residual <= tolerance || max_iterations <= 0) return out;
+  if (relative_residual(rr0, ref, rr0) <= tolerance || max_iterations <= 0) return out;
 
   int rz_old = DeviceDots::kRZ0, rz_new = DeviceDots::kRZ1;
   Vec4Buffer* z = &mg_.apply(r_);
@@ -40,8 +44,9 @@ SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, doub
         .run(groups_global);
     dots_.sum_partials(n, DeviceDots::kRR);
     out.iterations = it + 1;
-    out.residual = relative_residual(dots_.read(DeviceDots::kRR), bb, rr0);
-    if (out.residual <= tolerance || it + 1 == max_iterations) break;
+    const cl_float4 rr = dots_.read(DeviceDots::kRR);
+    out.residual = relative_residual(rr, bb, rr0);
+    if (relative_residual(rr, ref, rr0) <= tolerance || it + 1 == max_iterations) break;
     z = &mg_.apply(r_);
     dots_.dot(r_, *z, n, rz_new);
     update_p_.args(p_, *z, dots_.scalars(), rz_new, rz_old, n).run(n);

@@ -10,7 +10,8 @@ class FastSolver {
   FastSolver(Context& ctx, int width, int height);
   // Like CgSolver::solve; call setup() after the weights of `sys` change.
   void setup(const LinearSystem& sys) { mg_.setup(sys); }
-  SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance);
+  SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                     bool relative_to_start = false);
   DeviceDots& dots() { return dots_; }
 
  private:

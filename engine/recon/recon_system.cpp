@@ -1,5 +1,8 @@
 #include "recon/recon_system.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace gdr {
 
 ReconSystem::ReconSystem(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
@@ -61,6 +64,14 @@ double ReconSystem::energy(float alpha, bool l2, DeviceDots& dots) {
   dots.sum_partials(n, DeviceDots::kEnergy);
   cl_float4 e = dots.read(DeviceDots::kEnergy);
   return double(e.s[0]) + e.s[1] + e.s[2];
+}
+
+double ReconSystem::primal_rms(DeviceDots& dots) {
+  int n = width_ * height_;
+  dots.dot(P_, P_, n, DeviceDots::kEnergy);
+  cl_float4 s = dots.read(DeviceDots::kEnergy);
+  double m = std::max({double(s.s[0]), double(s.s[1]), double(s.s[2])});
+  return std::sqrt(std::max(0.0, m) / n);
 }
 
 std::vector<float> ReconSystem::result(unsigned* nonfinite_outputs) {

@@ -38,6 +38,8 @@ class ReconSystem {
   void build_rhs();
   // Objective value of x (sum over channels) in the L1 or L2 norm.
   double energy(float alpha, bool l2, DeviceDots& dots);
+  // Root mean square of the primal over all pixels, the largest of R, G, B.
+  double primal_rms(DeviceDots& dots);
   // x as interleaved RGB, always finite.
   std::vector<float> result(unsigned* nonfinite_outputs);
 

@@ -1,6 +1,8 @@
 #include "recon/reconstruct.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <climits>
 #include <string>
 
@@ -36,12 +38,13 @@ class Solver {
       cg_ = std::make_unique<CgSolver>(ctx, w, h);
     }
   }
-  SolveOutcome solve(ReconSystem& problem, int max_iterations, double tolerance) {
+  SolveOutcome solve(ReconSystem& problem, int max_iterations, double tolerance,
+                     bool relative_to_start = false) {
     problem.build_rhs();
     LinearSystem sys = problem.system();
-    if (!fast_) return cg_->solve(sys, max_iterations, tolerance);
+    if (!fast_) return cg_->solve(sys, max_iterations, tolerance, relative_to_start);
     fast_solver_->setup(sys);
-    return fast_solver_->solve(sys, max_iterations, tolerance);
+    return fast_solver_->solve(sys, max_iterations, tolerance, relative_to_start);
   }
   DeviceDots& dots() { return fast_ ? fast_solver_->dots() : cg_->dots(); }
 
@@ -73,18 +76,25 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
   double l1_tol = settings.tolerance > 0 ? settings.tolerance : fast ? kFastL1RoundTolerance : 0.0;
 
   ReconResult result;
-  // L2, which is also the starting point of the L1 reweighting.
-  problem.set_l2_weights(settings.alpha);
-  SolveOutcome o = solver.solve(problem, cap, l2_tol);
-  result.iterations += o.iterations;
-  result.residual = o.residual;
-  if (l1) {
-    float reg = settings.l1_reg > 0 ? settings.l1_reg : 0.05f;
+  if (!l1) {
+    problem.set_l2_weights(settings.alpha);
+    SolveOutcome o = solver.solve(problem, cap, l2_tol);
+    result.iterations = o.iterations;
+    result.residual = o.residual;
+  } else {
+    // Reweighting starts from the primal, not from an L2 solution: L2 smears an outlier over its
+    // neighbourhood, where smooth, nearly satisfied terms then get large weights and lock the
+    // smear in as reg shrinks.
+    // reg is published for images of order 1; brighter images scale it with their RMS so that
+    // the weights (and the conditioning of each round) do not depend on the exposure.
+    double scale = std::max(1.0, problem.primal_rms(solver.dots()));
+    if (!std::isfinite(scale)) scale = 1.0;
+    float reg = float((settings.l1_reg > 0 ? settings.l1_reg : 0.05f) * scale);
     for (int round = 0; round < settings.l1_rounds; ++round, reg *= 0.5f) {
       // reg stays a normal float however many rounds are asked for.
       if (reg < 1e-30f) reg = 1e-30f;
       problem.set_l1_weights(settings.alpha, reg);
-      o = solver.solve(problem, cap, l1_tol);
+      SolveOutcome o = solver.solve(problem, cap, l1_tol, fast);
       result.iterations += o.iterations;
       result.residual = o.residual;
     }
