@@ -10,10 +10,10 @@ CgSolver::CgSolver(Context& ctx, int width, int height)
       r_(ctx, size_t(n_)),
       p_(ctx, size_t(n_)),
       q_(ctx, size_t(n_)),
-      apply_(ctx.program("recon/operator.cl")->kernel("recon_apply")),
-      residual_(ctx.program("recon/operator.cl")->kernel("recon_residual")),
-      update_xr_(ctx.program("recon/cg.cl")->kernel("cg_update_xr")),
-      update_p_(ctx.program("recon/cg.cl")->kernel("cg_update_p")) {}
+      apply_(recon_program(ctx, "recon/operator.cl")->kernel("recon_apply")),
+      residual_(recon_program(ctx, "recon/operator.cl")->kernel("recon_residual")),
+      update_xr_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_xr")),
+      update_p_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_p")) {}
 
 SolveOutcome CgSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
                                  bool relative_to_start) {

@@ -5,11 +5,17 @@
 
 namespace gdr {
 
+std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file) {
+  Defines defines;
+  if (ctx.is_cpu()) defines["RECON_CONTIGUOUS"] = "";
+  return ctx.program(file, defines);
+}
+
 DeviceDots::DeviceDots(Context& ctx)
     : partial_(ctx, kMaxGroups),
       scal_(ctx, kSlotCount),
-      dot_(ctx.program("recon/reduce.cl")->kernel("recon_dot_partial")),
-      final_(ctx.program("recon/reduce.cl")->kernel("recon_sum_final")) {
+      dot_(recon_program(ctx, "recon/reduce.cl")->kernel("recon_dot_partial")),
+      final_(recon_program(ctx, "recon/reduce.cl")->kernel("recon_sum_final")) {
   clear();
 }
 

@@ -7,6 +7,9 @@ namespace gdr {
 
 using Vec4Buffer = Buffer<cl_float4>;
 
+// Builds (once per context) a kernels/recon program with the defines for this device.
+std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file);
+
 class DeviceDots {
  public:
   enum Slot { kZero = 0, kBB, kRR, kRZ0, kRZ1, kPQ, kEnergy, kSlotCount };

@@ -10,10 +10,10 @@ FastSolver::FastSolver(Context& ctx, int width, int height)
       r_(ctx, size_t(width) * height),
       p_(ctx, size_t(width) * height),
       q_(ctx, size_t(width) * height),
-      apply_dot_(ctx.program("recon/operator.cl")->kernel("recon_apply_dot")),
-      residual_(ctx.program("recon/operator.cl")->kernel("recon_residual")),
-      update_xr_dot_(ctx.program("recon/cg.cl")->kernel("cg_update_xr_dot")),
-      update_p_(ctx.program("recon/cg.cl")->kernel("cg_update_p")) {}
+      apply_dot_(recon_program(ctx, "recon/operator.cl")->kernel("recon_apply_dot")),
+      residual_(recon_program(ctx, "recon/operator.cl")->kernel("recon_residual")),
+      update_xr_dot_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_xr_dot")),
+      update_p_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_p")) {}
 
 SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
                                  bool relative_to_start) {

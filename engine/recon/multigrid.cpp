@@ -5,19 +5,18 @@
 namespace gdr {
 namespace {
 constexpr float kOmega = 0.8f;      // damped Jacobi, the usual choice for 5-point stencils
-constexpr int kSweeps = 1;          // before and after the coarse correction
 constexpr int kCoarsestSweeps = 8;  // coarse levels are dominated by the screening term
 constexpr int kCoarsestPixels = 64;
 }  // namespace
 
 Multigrid::Multigrid(Context& ctx, int width, int height)
     : ctx_(ctx),
-      coarsen_(ctx.program("recon/multigrid.cl")->kernel("mg_coarsen")),
-      diag_(ctx.program("recon/setup.cl")->kernel("recon_diag_inv")),
-      jacobi_zero_(ctx.program("recon/multigrid.cl")->kernel("mg_jacobi_zero")),
-      jacobi_(ctx.program("recon/multigrid.cl")->kernel("mg_jacobi")),
-      restrict_(ctx.program("recon/multigrid.cl")->kernel("mg_restrict_residual")),
-      prolong_(ctx.program("recon/multigrid.cl")->kernel("mg_prolong_add")) {
+      coarsen_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_coarsen")),
+      diag_(recon_program(ctx, "recon/setup.cl")->kernel("recon_diag_inv")),
+      jacobi_zero_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_jacobi_zero")),
+      jacobi_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_jacobi")),
+      restrict_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_restrict_presmoothed")),
+      correct_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_correct")) {
   int w = width, h = height;
   for (;;) {
     auto l = std::make_unique<Level>();
@@ -67,24 +66,23 @@ void Multigrid::smooth(Level& l, int sweeps) {
 }
 
 Vec4Buffer& Multigrid::apply(Vec4Buffer& r) {
+  // One Jacobi sweep before and one after the coarse correction on every level; the one before
+  // is fused with the residual and restriction.
   levels_[0]->b = &r;
   const size_t last = levels_.size() - 1;
-  for (size_t i = 0;; ++i) {
+  for (size_t i = 0; i < last; ++i) {
     Level& l = *levels_[i];
-    jacobi_zero_.args(*l.b, l.dinv, kOmega, l.n(), l.x).run(l.n());
-    if (i == last) {
-      smooth(l, kCoarsestSweeps - 1);
-      break;
-    }
-    smooth(l, kSweeps - 1);
     Level& c = *levels_[i + 1];
-    restrict_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, l.w, l.h, *c.b, c.w, c.h).run(c.n());
+    restrict_.args(*l.b, l.dinv, kOmega, *l.wp, *l.wx, *l.wy, l.w, l.h, *c.b, c.w, c.h).run(c.n());
   }
+  Level& coarsest = *levels_[last];
+  jacobi_zero_.args(*coarsest.b, coarsest.dinv, kOmega, coarsest.n(), coarsest.x).run(coarsest.n());
+  smooth(coarsest, kCoarsestSweeps - 1);
   for (size_t i = last; i-- > 0;) {
     Level& l = *levels_[i];
     Level& c = *levels_[i + 1];
-    prolong_.args(c.x, c.w, l.x, l.w, l.h).run(l.n());
-    smooth(l, kSweeps);
+    correct_.args(*l.b, l.dinv, kOmega, c.x, c.w, l.w, l.h, l.x).run(l.n());
+    smooth(l, 1);
   }
   return levels_[0]->x;
 }

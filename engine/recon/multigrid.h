@@ -1,6 +1,6 @@
 // Multigrid V-cycle on 2x2 aggregates with Galerkin coarse operators (kernels/recon/multigrid.cl),
-// used as a symmetric preconditioner: damped Jacobi, the same number of sweeps before and after
-// the coarse correction, so z = M r is a fixed SPD linear map as PCG requires.
+// used as a symmetric preconditioner: one damped Jacobi sweep before and one after the coarse
+// correction, so z = M r is a fixed SPD linear map as PCG requires.
 #pragma once
 #include <memory>
 #include <vector>
@@ -29,7 +29,7 @@ class Multigrid {
   void smooth(Level& l, int sweeps);
   Context& ctx_;
   std::vector<std::unique_ptr<Level>> levels_;
-  Kernel coarsen_, diag_, jacobi_zero_, jacobi_, restrict_, prolong_;
+  Kernel coarsen_, diag_, jacobi_zero_, jacobi_, restrict_, correct_;
 };
 
 }  // namespace gdr

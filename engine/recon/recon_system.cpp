@@ -21,16 +21,16 @@ ReconSystem::ReconSystem(Context& ctx, int width, int height, const std::vector<
       wy_(ctx, size_t(width) * height),
       b_(ctx, size_t(width) * height),
       x_(ctx, size_t(width) * height),
-      weights_l2_(ctx.program("recon/setup.cl")->kernel("recon_weights_l2")),
-      weights_l1_(ctx.program("recon/setup.cl")->kernel("recon_weights_l1")),
-      rhs_(ctx.program("recon/setup.cl")->kernel("recon_rhs")),
-      energy_(ctx.program("recon/setup.cl")->kernel("recon_energy")),
-      unpack_(ctx.program("recon/setup.cl")->kernel("recon_unpack")) {
+      weights_l2_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_l2")),
+      weights_l1_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_l1")),
+      rhs_(recon_program(ctx, "recon/setup.cl")->kernel("recon_rhs")),
+      energy_(recon_program(ctx, "recon/setup.cl")->kernel("recon_energy")),
+      unpack_(recon_program(ctx, "recon/setup.cl")->kernel("recon_unpack")) {
   Buffer<float> primal(ctx, primal_rgb, CL_MEM_READ_ONLY);
   Buffer<float> dx(ctx, dx_rgb, CL_MEM_READ_ONLY);
   Buffer<float> dy(ctx, dy_rgb, CL_MEM_READ_ONLY);
   Buffer<cl_uint> count(ctx, std::vector<cl_uint>{0});
-  Kernel pack = ctx.program("recon/setup.cl")->kernel("recon_pack");
+  Kernel pack = recon_program(ctx, "recon/setup.cl")->kernel("recon_pack");
   pack.args(primal, dx, dy, width, height, P_, Gx_, Gy_, mp_, mx_, my_, count).run(size_t(width) * height);
   nonfinite_inputs_ = count.read()[0];
   // The primal (0 where missing) is the starting estimate.

@@ -21,7 +21,7 @@ __kernel void cg_update_xr_dot(__global float4* x, __global float4* r, __global 
   __local float4 scratch[RECON_LOCAL];
   float4 a = recon_ratio(scal[num], scal[den]);
   float4 s = (float4)(0.0f);
-  for (int i = get_global_id(0); i < n; i += get_global_size(0)) {
+  RECON_FOR_SHARE(i, n) {
     x[i] += a * p[i];
     float4 ri = r[i] - a * q[i];
     r[i] = ri;

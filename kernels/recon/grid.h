@@ -8,6 +8,19 @@
 // Every launch uses this local size (PoCL compiles again per new local size).
 #define RECON_LOCAL 64
 
+// Each item of a reducing kernel takes a share of the n pixels: a contiguous run where
+// RECON_CONTIGUOUS is defined (CPU devices: one thread walks memory in order), interleaved
+// otherwise (GPUs: neighbouring items touch neighbouring words).
+#ifdef RECON_CONTIGUOUS
+#define RECON_FOR_SHARE(i, n)                                                        \
+  for (int i##_len = ((n) + (int)get_global_size(0) - 1) / (int)get_global_size(0), \
+           i = (int)get_global_id(0) * i##_len, i##_end = min((int)(n), i + i##_len); \
+       i < i##_end; ++i)
+#else
+#define RECON_FOR_SHARE(i, n) \
+  for (int i = (int)get_global_id(0); i < (n); i += (int)get_global_size(0))
+#endif
+
 // (A x)(i) = wp x_i + sum over the pixel's edges of w_e (x_i - x_j): the screened Poisson
 // operator alpha^2 Wp + Dx^T Wx Dx + Dy^T Wy Dy applied at one pixel.
 inline float4 recon_apply_at(__global const float4* x, __global const float4* wp,

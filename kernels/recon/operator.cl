@@ -27,7 +27,7 @@ __kernel void recon_apply_dot(__global const float4* p, __global const float4* w
   __local float4 scratch[RECON_LOCAL];
   float4 s = (float4)(0.0f);
   int n = w * h;
-  for (int i = get_global_id(0); i < n; i += get_global_size(0)) {
+  RECON_FOR_SHARE(i, n) {
     float4 v = recon_apply_at(p, wp, wx, wy, i % w, i / w, w, h);
     q[i] = v;
     s += p[i] * v;

@@ -8,7 +8,7 @@ __kernel void recon_dot_partial(__global const float4* a, __global const float4*
                                 __global float4* partial) {
   __local float4 scratch[RECON_LOCAL];
   float4 s = (float4)(0.0f);
-  for (int i = get_global_id(0); i < n; i += get_global_size(0)) s += a[i] * b[i];
+  RECON_FOR_SHARE(i, n) s += a[i] * b[i];
   float4 total = recon_group_sum(s, scratch);
   if (get_local_id(0) == 0) partial[get_group_id(0)] = total;
 }

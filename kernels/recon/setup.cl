@@ -102,7 +102,7 @@ __kernel void recon_energy(__global const float4* x, __global const float4* P,
                            __global float4* partial) {
   __local float4 scratch[RECON_LOCAL];
   float4 s = (float4)(0.0f);
-  for (int i = get_global_id(0); i < w * h; i += get_global_size(0)) {
+  RECON_FOR_SHARE(i, w * h) {
     int px = i % w, py = i / w;
     float4 xi = x[i];
     float4 ep = alpha * (xi - P[i]);
