@@ -1,0 +1,52 @@
+#include "recon/cg_solver.h"
+
+#include <utility>
+
+namespace gdr {
+
+CgSolver::CgSolver(Context& ctx, int width, int height)
+    : n_(width * height),
+      dots_(ctx),
+      r_(ctx, size_t(n_)),
+      p_(ctx, size_t(n_)),
+      q_(ctx, size_t(n_)),
+      apply_(recon_program(ctx, "recon/operator.cl")->kernel("recon_apply")),
+      residual_(recon_program(ctx, "recon/operator.cl")->kernel("recon_residual")),
+      update_xr_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_xr")),
+      update_p_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_p")) {}
+
+SolveOutcome CgSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                                 bool relative_to_start) {
+  const int n = sys.pixels(), w = sys.width, h = sys.height;
+  dots_.clear();
+  residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, w, h, r_).run(n);
+  dots_.dot(*sys.b, *sys.b, n, DeviceDots::kBB);
+  int rr_old = DeviceDots::kRR, rr_new = DeviceDots::kRZ0;
+  dots_.dot(r_, r_, n, rr_old);
+  const cl_float4 rr0 = dots_.read(rr_old);
+  const cl_float4 bb = dots_.read(DeviceDots::kBB);
+  // Stopping is judged against |b|, or for a warm-started IRLS round against its first residual.
+  const cl_float4 ref = relative_to_start ? rr0 : bb;
+  SolveOutcome out;
+  out.residual = relative_residual(rr0, bb, rr0);
+  if (relative_residual(rr0, ref, rr0) <= tolerance || max_iterations <= 0) return out;
+
+  // p = r (beta = 0 / 0 -> 0; p is zeroed first so stale contents cannot leak in).
+  p_.fill(cl_float4{{0, 0, 0, 0}});
+  update_p_.args(p_, r_, dots_.scalars(), int(DeviceDots::kZero), int(DeviceDots::kZero), n).run(n);
+  for (int it = 0; it < max_iterations; ++it) {
+    apply_.args(p_, *sys.wp, *sys.wx, *sys.wy, w, h, q_).run(n);
+    dots_.dot(p_, q_, n, DeviceDots::kPQ);
+    update_xr_.args(*sys.x, r_, p_, q_, dots_.scalars(), rr_old, int(DeviceDots::kPQ), n).run(n);
+    dots_.dot(r_, r_, n, rr_new);
+    update_p_.args(p_, r_, dots_.scalars(), rr_new, rr_old, n).run(n);
+    out.iterations = it + 1;
+    const cl_float4 rr = dots_.read(rr_new);
+    out.residual = relative_residual(rr, bb, rr0);
+    std::swap(rr_old, rr_new);
+    if (relative_residual(rr, ref, rr0) <= tolerance) break;
+  }
+  return out;
+}
+
+}  // namespace gdr

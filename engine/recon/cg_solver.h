@@ -1,0 +1,25 @@
+// Baseline: conjugate gradients on the normal equations A x = b, all vector work in kernels; the
+// host reads one float4 (the residual norms) per iteration to decide when to stop.
+#pragma once
+#include "recon/recon_system.h"
+
+namespace gdr {
+
+class CgSolver {
+ public:
+  CgSolver(Context& ctx, int width, int height);
+  // Improves sys.x in place (warm start) for at most max_iterations; stops early once the
+  // relative residual is <= tolerance (when tolerance > 0): |r| / |b|, or |r| / |r0| with
+  // relative_to_start. The outcome's residual is always |r| / |b|.
+  SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                     bool relative_to_start = false);
+  DeviceDots& dots() { return dots_; }
+
+ private:
+  int n_;
+  DeviceDots dots_;
+  Vec4Buffer r_, p_, q_;
+  Kernel apply_, residual_, update_xr_, update_p_;
+};
+
+}  // namespace gdr

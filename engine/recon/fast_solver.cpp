@@ -1,0 +1,58 @@
+#include "recon/fast_solver.h"
+
+#include <utility>
+
+namespace gdr {
+
+FastSolver::FastSolver(Context& ctx, int width, int height)
+    : dots_(ctx),
+      mg_(ctx, width, height),
+      r_(ctx, size_t(width) * height),
+      p_(ctx, size_t(width) * height),
+      q_(ctx, size_t(width) * height),
+      apply_dot_(recon_program(ctx, "recon/operator.cl")->kernel("recon_apply_dot")),
+      residual_(recon_program(ctx, "recon/operator.cl")->kernel("recon_residual")),
+      update_xr_dot_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_xr_dot")),
+      update_p_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_p")) {}
+
+SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                                 bool relative_to_start) {
+  const int n = sys.pixels(), w = sys.width, h = sys.height;
+  const size_t groups_global = DeviceDots::reduce_global(n);
+  dots_.clear();
+  residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, w, h, r_).run(n);
+  dots_.dot(*sys.b, *sys.b, n, DeviceDots::kBB);
+  dots_.dot(r_, r_, n, DeviceDots::kRR);
+  const cl_float4 rr0 = dots_.read(DeviceDots::kRR);
+  const cl_float4 bb = dots_.read(DeviceDots::kBB);
+  // Stopping is judged against |b|, or for a warm-started IRLS round against its first residual.
+  const cl_float4 ref = relative_to_start ? rr0 : bb;
+  SolveOutcome out;
+  out.residual = relative_residual(rr0, bb, rr0);
+  if (relative_residual(rr0, ref, rr0) <= tolerance || max_iterations <= 0) return out;
+
+  int rz_old = DeviceDots::kRZ0, rz_new = DeviceDots::kRZ1;
+  Vec4Buffer* z = &mg_.apply(r_);
+  dots_.dot(r_, *z, n, rz_old);
+  p_.fill(cl_float4{{0, 0, 0, 0}});
+  update_p_.args(p_, *z, dots_.scalars(), int(DeviceDots::kZero), int(DeviceDots::kZero), n).run(n);
+  for (int it = 0; it < max_iterations; ++it) {
+    apply_dot_.args(p_, *sys.wp, *sys.wx, *sys.wy, w, h, q_, dots_.partial()).run(groups_global);
+    dots_.sum_partials(n, DeviceDots::kPQ);
+    update_xr_dot_.args(*sys.x, r_, p_, q_, dots_.scalars(), rz_old, int(DeviceDots::kPQ), n,
+                        dots_.partial())
+        .run(groups_global);
+    dots_.sum_partials(n, DeviceDots::kRR);
+    out.iterations = it + 1;
+    const cl_float4 rr = dots_.read(DeviceDots::kRR);
+    out.residual = relative_residual(rr, bb, rr0);
+    if (relative_residual(rr, ref, rr0) <= tolerance || it + 1 == max_iterations) break;
+    z = &mg_.apply(r_);
+    dots_.dot(r_, *z, n, rz_new);
+    update_p_.args(p_, *z, dots_.scalars(), rz_new, rz_old, n).run(n);
+    std::swap(rz_old, rz_new);
+  }
+  return out;
+}
+
+}  // namespace gdr

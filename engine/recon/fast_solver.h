@@ -1,0 +1,24 @@
+// The fast solver: conjugate gradients preconditioned by a multigrid V-cycle, with the operator
+// apply fused with its dot product and the x/r update fused with the residual norm.
+#pragma once
+#include "recon/multigrid.h"
+
+namespace gdr {
+
+class FastSolver {
+ public:
+  FastSolver(Context& ctx, int width, int height);
+  // Like CgSolver::solve; call setup() after the weights of `sys` change.
+  void setup(const LinearSystem& sys) { mg_.setup(sys); }
+  SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
+                     bool relative_to_start = false);
+  DeviceDots& dots() { return dots_; }
+
+ private:
+  DeviceDots dots_;
+  Multigrid mg_;
+  Vec4Buffer r_, p_, q_;
+  Kernel apply_dot_, residual_, update_xr_dot_, update_p_;
+};
+
+}  // namespace gdr

@@ -1,0 +1,58 @@
+// The reconstruction problem on the device: packed inputs with their validity masks, the current
+// term weights, right-hand side and estimate, and the kernels that build them.
+#pragma once
+#include <vector>
+
+#include "recon/device_dots.h"
+
+namespace gdr {
+
+// A linear system A x = b of the screened Poisson form (see kernels/recon/grid.h).
+struct LinearSystem {
+  int width = 0, height = 0;
+  Vec4Buffer* wp = nullptr;
+  Vec4Buffer* wx = nullptr;
+  Vec4Buffer* wy = nullptr;
+  Vec4Buffer* b = nullptr;
+  Vec4Buffer* x = nullptr;
+  int pixels() const { return width * height; }
+};
+
+// Outcome of one linear solve.
+struct SolveOutcome {
+  int iterations = 0;
+  double residual = 0;  // relative, worst channel
+};
+
+class ReconSystem {
+ public:
+  // Uploads and packs the inputs (sizes already checked); x starts at the primal.
+  ReconSystem(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
+              const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb);
+
+  unsigned nonfinite_inputs() const { return nonfinite_inputs_; }
+  void set_l2_weights(float alpha);
+  // IRLS weights 1/(|e| + reg) from the current estimate x.
+  void set_l1_weights(float alpha, float reg);
+  // b from the current weights.
+  void build_rhs();
+  // Objective value of x (sum over channels) in the L1 or L2 norm.
+  double energy(float alpha, bool l2, DeviceDots& dots);
+  // Root mean square of the primal over all pixels, the largest of R, G, B.
+  double primal_rms(DeviceDots& dots);
+  // x as interleaved RGB, always finite.
+  std::vector<float> result(unsigned* nonfinite_outputs);
+
+  LinearSystem system();
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  Context& ctx_;
+  int width_, height_;
+  unsigned nonfinite_inputs_ = 0;
+  Vec4Buffer P_, Gx_, Gy_, mp_, mx_, my_, wp_, wx_, wy_, b_, x_;
+  Kernel weights_l2_, weights_l1_, rhs_, energy_, unpack_;
+};
+
+}  // namespace gdr

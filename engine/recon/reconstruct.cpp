@@ -1,0 +1,123 @@
+#include "recon/reconstruct.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <climits>
+#include <string>
+
+#include "recon/cg_solver.h"
+#include "recon/fast_solver.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace gdr {
+namespace {
+
+// With tolerance 0 the fast solver stops at these relative residuals instead of running to the
+// cap: below what the published fixed iteration counts reach (see tests/bench/bench_recon.cpp).
+constexpr double kFastL2Tolerance = 1e-4;
+constexpr double kFastL1RoundTolerance = 1e-2;
+
+void check_input(int width, int height, const std::vector<float>& v, const char* what) {
+  size_t expected = size_t(width) * size_t(height) * 3;
+  if (v.size() != expected) {
+    throw Error(std::string("reconstruct: ") + what + " has " + std::to_string(v.size()) +
+                " values, expected " + std::to_string(expected) + " (" + std::to_string(width) +
+                "x" + std::to_string(height) + " RGB)");
+  }
+}
+
+// Runs whichever solver the settings ask for on the current weights of `problem`.
+class Solver {
+ public:
+  Solver(Context& ctx, const ReconSettings& s, int w, int h) : fast_(s.solver == ReconSettings::Solver::Fast) {
+    if (fast_) {
+      fast_solver_ = std::make_unique<FastSolver>(ctx, w, h);
+    } else {
+      cg_ = std::make_unique<CgSolver>(ctx, w, h);
+    }
+  }
+  SolveOutcome solve(ReconSystem& problem, int max_iterations, double tolerance,
+                     bool relative_to_start = false) {
+    problem.build_rhs();
+    LinearSystem sys = problem.system();
+    if (!fast_) return cg_->solve(sys, max_iterations, tolerance, relative_to_start);
+    fast_solver_->setup(sys);
+    return fast_solver_->solve(sys, max_iterations, tolerance, relative_to_start);
+  }
+  DeviceDots& dots() { return fast_ ? fast_solver_->dots() : cg_->dots(); }
+
+ private:
+  bool fast_;
+  std::unique_ptr<FastSolver> fast_solver_;
+  std::unique_ptr<CgSolver> cg_;
+};
+
+}  // namespace
+
+ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
+                        const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb,
+                        const ReconSettings& settings, Stats* stats) {
+  if (width <= 0 || height <= 0 || int64_t(width) * height > INT_MAX / 4) {
+    throw Error("reconstruct: invalid image size " + std::to_string(width) + "x" + std::to_string(height));
+  }
+  check_input(width, height, primal_rgb, "primal");
+  check_input(width, height, dx_rgb, "dx");
+  check_input(width, height, dy_rgb, "dy");
+  const bool l1 = settings.norm == ReconNorm::L1;
+  const bool fast = settings.solver == ReconSettings::Solver::Fast;
+  auto start = std::chrono::steady_clock::now();
+
+  ReconSystem problem(ctx, width, height, primal_rgb, dx_rgb, dy_rgb);
+  Solver solver(ctx, settings, width, height);
+  const int cap = std::max(0, settings.cg_iterations);
+  double l2_tol = settings.tolerance > 0 ? settings.tolerance : fast ? kFastL2Tolerance : 0.0;
+  double l1_tol = settings.tolerance > 0 ? settings.tolerance : fast ? kFastL1RoundTolerance : 0.0;
+
+  ReconResult result;
+  if (!l1) {
+    problem.set_l2_weights(settings.alpha);
+    SolveOutcome o = solver.solve(problem, cap, l2_tol);
+    result.iterations = o.iterations;
+    result.residual = o.residual;
+  } else {
+    // Reweighting starts from the primal, not from an L2 solution: L2 smears an outlier over its
+    // neighbourhood, where smooth, nearly satisfied terms then get large weights and lock the
+    // smear in as reg shrinks.
+    // reg is published for images of order 1; brighter images scale it with their RMS so that
+    // the weights (and the conditioning of each round) do not depend on the exposure.
+    double scale = std::max(1.0, problem.primal_rms(solver.dots()));
+    if (!std::isfinite(scale)) scale = 1.0;
+    float reg = float((settings.l1_reg > 0 ? settings.l1_reg : 0.05f) * scale);
+    for (int round = 0; round < settings.l1_rounds; ++round, reg *= 0.5f) {
+      // reg stays a normal float however many rounds are asked for.
+      if (reg < 1e-30f) reg = 1e-30f;
+      problem.set_l1_weights(settings.alpha, reg);
+      SolveOutcome o = solver.solve(problem, cap, l1_tol, fast);
+      result.iterations += o.iterations;
+      result.residual = o.residual;
+    }
+  }
+  result.energy = problem.energy(settings.alpha, !l1, solver.dots());
+  unsigned nonfinite_outputs = 0;
+  result.rgb = problem.result(&nonfinite_outputs);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (problem.nonfinite_inputs() > 0) {
+    log::warn("reconstruct: ", problem.nonfinite_inputs(), " non-finite input values ignored");
+  }
+  if (stats) {
+    stats->add_count("recon/nonfinite_inputs", problem.nonfinite_inputs());
+    if (nonfinite_outputs) stats->add_count("recon/nonfinite_outputs", nonfinite_outputs);
+    stats->add_count("recon/iterations", uint64_t(result.iterations));
+    stats->set("recon/residual", result.residual);
+    stats->set("recon/energy", result.energy);
+    stats->set("recon/norm", l1 ? "L1" : "L2");
+    stats->set("recon/solver", fast ? "fast" : "cg");
+    stats->add_time("recon/solve", result.seconds);
+  }
+  return result;
+}
+
+}  // namespace gdr

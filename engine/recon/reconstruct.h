@@ -1,0 +1,48 @@
+// Poisson reconstruction: the image I minimising
+//   ||alpha (I - P)|| + ||dx I - Gx|| + ||dy I - Gy||
+// per colour channel, in the L2 norm (one linear solve) or the L1 norm (iteratively reweighted
+// least squares), from a primal P and forward-difference gradients G, in kernels on the device.
+#pragma once
+#include <vector>
+
+#include "device/context.h"
+#include "stats/stats.h"
+
+namespace gdr {
+
+enum class ReconNorm { L1, L2 };
+
+struct ReconSettings {
+  ReconNorm norm = ReconNorm::L1;
+  float alpha = 0.2f;
+  // The published defaults (Kettunen et al. 2015 / Manzi et al.): L2 50 CG iterations; L1 20
+  // reweighting rounds of 50 CG iterations, weights 1/(|e| + reg), reg from 0.05 halving each
+  // round.
+  int cg_iterations = 50;
+  int l1_rounds = 20;
+  float l1_reg = 0.05f;
+  // Relative residual |b - Ax| / |b| at which a linear solve stops early (0: iteration cap only;
+  // the fast solver then uses its own targets, see fast_solver.h).
+  double tolerance = 0.0;
+  // CG: baseline conjugate gradients on the normal equations. Fast: multigrid-preconditioned CG.
+  enum class Solver { CG, Fast } solver = Solver::Fast;
+};
+
+struct ReconResult {
+  std::vector<float> rgb;  // interleaved RGB, width * height * 3, always finite
+  int iterations = 0;      // (P)CG iterations over all solves
+  double residual = 0;     // relative residual of the last linear solve (worst channel)
+  double seconds = 0;
+  double energy = 0;       // objective value (sum over channels) of the result, in the chosen norm
+};
+
+// Images are interleaved RGB float, row-major from the top row. dx(x,y) = I(x+1,y) - I(x,y) for
+// x < width-1 and dy(x,y) = I(x,y+1) - I(x,y) for y < height-1; the last column of dx and last
+// row of dy are ignored. Non-finite inputs are dropped from the objective and counted in stats
+// ("recon/nonfinite_inputs"). Throws gdr::Error on mismatched sizes.
+// Stats: "recon/iterations", "recon/residual", "recon/norm", "recon/energy", time "recon/solve".
+ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
+                        const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb,
+                        const ReconSettings& settings, Stats* stats);
+
+}  // namespace gdr
