@@ -14,10 +14,12 @@
 namespace gdr {
 namespace {
 
-// With tolerance 0 the fast solver stops at these relative residuals instead of running to the
-// cap: below what the published fixed iteration counts reach (see tests/bench/bench_recon.cpp).
+// With tolerance 0 the fast solver stops at these instead of running to the cap. L2: relative to
+// |b|, below the residual 50 CG iterations reach on the benchmark frame. L1: each warm-started
+// round stops once its residual fell by this factor; inexact rounds still reach a lower L1
+// objective than 20 x 50 CG iterations on the benchmark frame (tests/bench/bench_recon.cpp).
 constexpr double kFastL2Tolerance = 1e-4;
-constexpr double kFastL1RoundTolerance = 1e-2;
+constexpr double kFastL1RoundTolerance = 0.3;
 
 void check_input(int width, int height, const std::vector<float>& v, const char* what) {
   size_t expected = size_t(width) * size_t(height) * 3;

@@ -21,8 +21,9 @@ struct ReconSettings {
   int cg_iterations = 50;
   int l1_rounds = 20;
   float l1_reg = 0.05f;
-  // Relative residual |b - Ax| / |b| at which a linear solve stops early (0: iteration cap only;
-  // the fast solver then uses its own targets, see fast_solver.h).
+  // Relative residual |b - Ax| / |b| at which a linear solve stops early (0: iteration cap only
+  // for CG; the fast solver then stops at 1e-4 for L2). The fast solver judges each warm-started
+  // L1 round against the round's first residual instead (default target 0.3).
   double tolerance = 0.0;
   // CG: baseline conjugate gradients on the normal equations. Fast: multigrid-preconditioned CG.
   enum class Solver { CG, Fast } solver = Solver::Fast;

@@ -18,8 +18,9 @@ struct Scene {
 
   // Geometry: every shape is triangles.
   std::vector<Vec4> positions;  // world space, w unused
-  std::vector<Vec4> normals;    // per vertex (same count as positions), world space
-  std::vector<float> uvs;       // two per vertex
+  std::vector<Vec4> normals;    // per vertex (same count as positions), world space; zero for
+                                // shapes without SHAPE_HAS_NORMALS (kernels use the geometric one)
+  std::vector<float> uvs;       // two per vertex (zero without SHAPE_HAS_UVS)
   std::vector<GdrTriangle> triangles;
   std::vector<GdrShape> shapes;
   std::vector<std::string> shape_names;  // id or "<type> at FILE:LINE", for messages

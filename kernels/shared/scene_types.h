@@ -21,7 +21,8 @@ typedef struct GdrMaterial {
   int type;                // BSDF_*
   int twosided;            // both sides shade as the front (Mitsuba's twosided adapter)
   int distribution;        // MICROFACET_* for the rough types
-  int reflectance_texture; // texture for diffuse_reflectance / reflectance (diffuse, plastic), or -1
+  int reflectance_texture; // texture for diffuse_reflectance / reflectance (diffuse, plastic), or -1;
+                           // when set it replaces `reflectance`
   float reflectance[4];             // diffuse reflectance (diffuse, plastic base), RGB + unused
   float specular_reflectance[4];    // scale of the specular reflection
   float specular_transmittance[4];  // scale of the specular transmission
@@ -64,7 +65,7 @@ typedef struct GdrLight {
   int distribution_offset;  // LIGHT_ENVMAP: start of its sampling tables (set by the integrator)
   float radiance[4];   // area/constant: radiance; point/spot: intensity; directional: irradiance;
                        // envmap: scale
-  float position[4];   // point/spot
+  float position[4];   // point/spot; directional/environment: bounding-sphere centre
   float direction[4];  // spot/directional: direction the light travels (normalized)
   float cos_cutoff;    // spot: cosine of the total cone angle
   float cos_falloff;   // spot: cosine of the angle where the falloff starts
@@ -82,7 +83,7 @@ typedef struct GdrTriangle {
 
 #define SHAPE_HAS_NORMALS 1  // per-vertex shading normals are used
 #define SHAPE_HAS_UVS 2
-#define SHAPE_FLIP_NORMALS 4
+#define SHAPE_FLIP_NORMALS 4  // negate both the geometric and the shading normal (data unchanged)
 
 typedef struct GdrShape {
   int material;         // index into materials
