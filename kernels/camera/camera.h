@@ -24,11 +24,11 @@ inline float2 sample_filter(int filter, float radius, float2 u) {
 
 // The ray through film position (fx, fy) in pixels from the top-left corner.
 inline void camera_ray(const GdrCamera* cam, float fx, float fy, float3* origin, float3* dir, float* tnear, float* tfar) {
-  float3 local = (float3)((1.0f - 2.0f * fx / (float)cam->width) * cam->tan_half_fov_x,
+  float3 d = (float3)((1.0f - 2.0f * fx / (float)cam->width) * cam->tan_half_fov_x,
                           (1.0f - 2.0f * fy / (float)cam->height) * cam->tan_half_fov_y, 1.0f);
-  local = normalize(local);
+  d = normalize(d);
   *origin = xform_point(cam->to_world, (float3)(0.0f, 0.0f, 0.0f));
-  *dir = normalize(xform_vector(cam->to_world, local));
-  *tnear = cam->near_clip / local.z;
-  *tfar = cam->far_clip / local.z;
+  *dir = normalize(xform_vector(cam->to_world, d));
+  *tnear = cam->near_clip / d.z;
+  *tfar = cam->far_clip / d.z;
 }
