@@ -58,7 +58,8 @@ inline float2 beckmann_visible_slopes_11(float cos_theta, float2 u) {
   float cot_theta = 1.0f / tan_theta;  // +Inf at normal incidence: erf(Inf) = 1, exp(-Inf) = 0
   float maxval = erf(cot_theta);
   float tail = tan_theta > 0.0f ? GDR_INV_SQRT_PI * tan_theta * exp(-cot_theta * cot_theta) : 0.0f;
-  float target = u.x * (1.0f + maxval + tail);
+  float norm = 1.0f + maxval + tail;
+  float target = u.x * norm;
   float lo = -1.0f, hi = maxval;
   // Initial guess: inverse of an approximation of the CDF (Mitsuba).
   float x = maxval - (maxval + 1.0f) * erf(sqrt(-log(u.x)));
@@ -74,7 +75,7 @@ inline float2 beckmann_visible_slopes_11(float cos_theta, float2 u) {
       best_x = x;
     }
     if (value > 0.0f) hi = x; else lo = x;
-    if (best_v < 1e-7f) break;
+    if (best_v < 2e-7f * norm) break;  // u reproduced to 2e-7
     float derivative = 1.0f - slope * tan_theta;
     float step = value / derivative;
     float next = (derivative > 0.0f && isfinite(step)) ? x - step : 0.5f * (lo + hi);
