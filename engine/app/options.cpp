@@ -37,6 +37,9 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(CLI::IsMember({"box", "tent", "gaussian"}));
   app.add_option("--max-depth", o.max_depth, "Maximum path length (default: the scene's, else 16)")
       ->check(CLI::Range(1, 1024));
+  app.add_option("--strategy", o.strategy,
+                 "Path tracing: mis (BSDF and light sampling) | bsdf (BSDF only) | light (light sampling only)")
+      ->check(CLI::IsMember({"mis", "bsdf", "light"}));
   app.add_option("--shift", o.shift, "Gradient-domain shift mapping: hybrid | replay")
       ->check(CLI::IsMember({"hybrid", "replay"}));
   app.add_option("--shift-threshold", o.shift_threshold, "Roughness below which a vertex counts as glossy/specular")

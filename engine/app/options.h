@@ -28,6 +28,7 @@ struct Options {
   int threads = 0;
   bool strict = false;
   std::string filter;  // overrides the scene's reconstruction filter
+  std::string strategy = "mis";  // pt: mis | bsdf | light
   int max_depth = -1;  // overrides the scene's integrator max_depth (-1: keep)
 
   // Gradient-domain settings.

@@ -66,6 +66,7 @@ int render_command(const Options& o) {
   settings.time_budget = o.time_budget;
   settings.spp = o.spp ? *o.spp : (o.time_budget ? 0 : scene.spp);
   settings.max_depth = o.max_depth > 0 ? o.max_depth : scene.max_depth;
+  settings.strategy = o.strategy == "bsdf" ? PT_STRATEGY_BSDF : o.strategy == "light" ? PT_STRATEGY_LIGHT : PT_STRATEGY_MIS;
   settings.progress = !o.quiet;
   stats.set("settings", settings_json(o, settings, integrator));
 
@@ -73,7 +74,10 @@ int render_command(const Options& o) {
   log::info("device: ", ctx.device().name, " (", ctx.device().platform_name, ")");
   log::info("scene: ", o.scene, ": ", scene.triangles.size(), " triangles, ", scene.lights.size(), " lights, ",
             scene.camera.width, "x", scene.camera.height);
-  log::info(scene.features.describe());
+  for (const std::string& w : scene.warnings) log::warn(w);
+  std::string effects = scene.features.describe();
+  while (!effects.empty() && effects.back() == '\n') effects.pop_back();
+  log::info(effects);
   EmbreeScene embree(scene, BuildQuality::High, &stats);
   PathTracer tracer(ctx, scene, embree);
   RenderResult result = tracer.render(settings);

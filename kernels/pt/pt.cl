@@ -132,12 +132,20 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
           } else {
             uint k = atomic_inc(&counters[PT_COUNTER_SHADOW_RAYS]);
             float3 o = offset_ray_origin(su.p, dot(ls.wi, su.ng) > 0.0f ? su.ng : -su.ng);
-            // Stop just short of an area light's surface; directional and environment rays are unbounded.
-            float tfar = isinf(ls.dist) ? INFINITY : ls.dist * (1.0f - 1e-4f);
+            // Aim from the offset origin and stop just short of the light point, so the light's
+            // own surface never occludes; directional and environment rays are unbounded.
+            float3 d = ls.wi;
+            float tfar = INFINITY;
+            if (!isinf(ls.dist)) {
+              float3 to_light = su.p + ls.wi * ls.dist - o;
+              tfar = length(to_light);
+              d = to_light / tfar;
+              tfar *= 1.0f - 1e-4f;
+            }
             __global GdrRay* r = &shadow_rays[k];
             r->org_x = o.x; r->org_y = o.y; r->org_z = o.z;
             r->tnear = 0.0f;
-            r->dir_x = ls.wi.x; r->dir_y = ls.wi.y; r->dir_z = ls.wi.z;
+            r->dir_x = d.x; r->dir_y = d.y; r->dir_z = d.z;
             r->time = 0.0f;
             r->tfar = tfar;
             r->mask = 0xFFFFFFFFu;

@@ -35,7 +35,7 @@ std::vector<std::vector<double>> block_means(PathTracer& tracer, int width, int 
   return runs;
 }
 
-void expect_same_expectation(const std::string& scene_file) {
+void expect_same_expectation(const std::string& scene_file, bool check_bsdf) {
   Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
   // A small film of the same aspect (the field of view is unchanged), whole blocks only.
   const int width = kWidth;
@@ -45,10 +45,10 @@ void expect_same_expectation(const std::string& scene_file) {
   EmbreeScene embree(scene, BuildQuality::Low);
   PathTracer tracer(test::default_context(), scene, embree);
   auto mis = block_means(tracer, width, height, PT_STRATEGY_MIS);
-  auto bsdf = block_means(tracer, width, height, PT_STRATEGY_BSDF);
+  auto bsdf = check_bsdf ? block_means(tracer, width, height, PT_STRATEGY_BSDF) : mis;
   auto light = block_means(tracer, width, height, PT_STRATEGY_LIGHT);
   const int blocks = static_cast<int>(mis[0].size());
-  const double alpha = test::sidak(1e-3, 2 * blocks);
+  const double alpha = test::sidak(1e-3, (check_bsdf ? 2 : 1) * blocks);
   for (int b = 0; b < blocks; ++b) {
     std::vector<double> m, f, l;
     for (int k = 0; k < kRuns; ++k) {
@@ -56,13 +56,18 @@ void expect_same_expectation(const std::string& scene_file) {
       f.push_back(bsdf[k][b]);
       l.push_back(light[k][b]);
     }
-    EXPECT_GT(test::welch_p(m, f), alpha) << scene_file << " block " << b << ": BSDF sampling differs from MIS";
+    if (check_bsdf) {
+      EXPECT_GT(test::welch_p(m, f), alpha) << scene_file << " block " << b << ": BSDF sampling differs from MIS";
+    }
     EXPECT_GT(test::welch_p(m, l), alpha) << scene_file << " block " << b << ": light sampling differs from MIS";
   }
 }
 
-TEST(PathTracerStrategies, CornellBoxAgrees) { expect_same_expectation("cornell-box.xml"); }
-TEST(PathTracerStrategies, GlossyPlatesAgree) { expect_same_expectation("glossy-plates.xml"); }
+TEST(PathTracerStrategies, CornellBoxAgrees) { expect_same_expectation("cornell-box.xml", true); }
+TEST(PathTracerStrategies, CausticsBoxAgrees) { expect_same_expectation("cornell-box-caustics.xml", true); }
+// BSDF sampling alone finds the plates' smallest lights so rarely that its run means are heavy-
+// tailed and a t-test on them is not valid at this budget; light sampling alone is compared.
+TEST(PathTracerStrategies, GlossyPlatesLightSamplingAgrees) { expect_same_expectation("glossy-plates.xml", false); }
 
 }  // namespace
 }  // namespace gdr
