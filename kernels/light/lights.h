@@ -43,7 +43,9 @@ inline int light_select(const SceneData* s, float u) {
 inline float3 environment_radiance(const SceneData* s, __global const GdrLight* l, float3 dir) {
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
-    float3 d = xform_vector(l->to_local, dir);
+    float to_local[12];
+    for (int i = 0; i < 12; ++i) to_local[i] = l->to_local[i];
+    float3 d = xform_vector(to_local, dir);
     float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
     float v = acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F;
     // texture_eval flips v for bitmaps (v = 0 at the bottom); the lat-long map starts at the top.
