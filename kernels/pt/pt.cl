@@ -3,31 +3,12 @@
 // intersects the queues with Embree between these kernels.
 #include "bsdf/bsdf.h"
 #include "camera/camera.h"
+#include "core/ray_queue.h"
 #include "core/rng.h"
 #include "light/lights.h"
 #include "scene/surface.h"
 #include "shared/pt_types.h"
 #include "shared/ray_types.h"
-
-// Random-number blocks (4 dimensions each) of a path: block 0 for the camera, then two per
-// bounce. Gradient-domain shifts replay these exact numbers.
-#define RNG_BLOCK_CAMERA 0u
-#define RNG_BLOCK_LIGHT(depth) (1u + 2u * (uint)(depth))
-#define RNG_BLOCK_BSDF(depth) (2u + 2u * (uint)(depth))
-
-inline void write_ray(__global GdrRayHit* r, float3 o, float3 d, float tnear, float tfar, uint id) {
-  r->ray.org_x = o.x; r->ray.org_y = o.y; r->ray.org_z = o.z;
-  r->ray.tnear = tnear;
-  r->ray.dir_x = d.x; r->ray.dir_y = d.y; r->ray.dir_z = d.z;
-  r->ray.time = 0.0f;
-  r->ray.tfar = tfar;
-  r->ray.mask = 0xFFFFFFFFu;
-  r->ray.id = id;
-  r->ray.flags = 0u;
-  r->hit.geomID = GDR_INVALID_ID;
-  r->hit.primID = GDR_INVALID_ID;
-  r->hit.instID = GDR_INVALID_ID;
-}
 
 // Adds a finite contribution to a pixel; a NaN or Inf one is counted and dropped.
 inline void film_add(__global float4* film, uint pixel, float3 c, __global uint* counters) {
@@ -51,7 +32,7 @@ __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, 
   float3 o, d;
   float tnear, tfar;
   camera_ray(&cam, fx, fy, &o, &d, &tnear, &tfar);
-  write_ray(&rays[i], o, d, tnear, tfar, i);
+  write_ray_hit(&rays[i], o, d, tnear, tfar, i);
   queue[i] = i;
   GdrPathState st;
   st.throughput[0] = st.throughput[1] = st.throughput[2] = 1.0f;
@@ -131,26 +112,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
             atomic_inc(&counters[PT_COUNTER_NONFINITE]);
           } else {
             uint k = atomic_inc(&counters[PT_COUNTER_SHADOW_RAYS]);
-            float3 o = offset_ray_origin(su.p, dot(ls.wi, su.ng) > 0.0f ? su.ng : -su.ng);
-            // Aim from the offset origin and stop just short of the light point, so the light's
-            // own surface never occludes; directional and environment rays are unbounded.
-            float3 d = ls.wi;
-            float tfar = INFINITY;
-            if (!isinf(ls.dist)) {
-              float3 to_light = su.p + ls.wi * ls.dist - o;
-              tfar = length(to_light);
-              d = to_light / tfar;
-              tfar *= 1.0f - 1e-4f;
-            }
-            __global GdrRay* r = &shadow_rays[k];
-            r->org_x = o.x; r->org_y = o.y; r->org_z = o.z;
-            r->tnear = 0.0f;
-            r->dir_x = d.x; r->dir_y = d.y; r->dir_z = d.z;
-            r->time = 0.0f;
-            r->tfar = tfar;
-            r->mask = 0xFFFFFFFFu;
-            r->id = st.pixel;
-            r->flags = 0u;
+            write_light_ray(&shadow_rays[k], su.p, su.ng, ls.wi, ls.dist, st.pixel);
             shadow_values[k] = (float4)(c, 0.0f);
           }
         }
@@ -183,7 +145,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
   paths[slot] = st;
   uint k = atomic_inc(&counters[PT_COUNTER_NEXT_RAYS]);
   queue_out[k] = slot;
-  write_ray(&rays_out[k], offset_ray_origin(su.p, dot(wi, su.ng) > 0.0f ? su.ng : -su.ng), wi, 0.0f, INFINITY, slot);
+  write_ray_hit(&rays_out[k], offset_ray_origin(su.p, dot(wi, su.ng) > 0.0f ? su.ng : -su.ng), wi, 0.0f, INFINITY, slot);
 }
 
 // Adds the contributions of the shadow rays Embree found unoccluded (blocked ones have tfar = -inf).
