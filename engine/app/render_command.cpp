@@ -8,6 +8,8 @@
 #include "device/context.h"
 #include "image/image_io.h"
 #include "integrators/progressive_loop.h"
+#include "integrators/gpt/gradient_image.h"
+#include "integrators/gpt/gradient_path_tracer.h"
 #include "integrators/pt/path_tracer.h"
 #include "scene/load_scene.h"
 #include "stats/stats.h"
@@ -37,6 +39,12 @@ nlohmann::json settings_json(const Options& o, const RenderSettings& s, const st
   j["max_depth"] = s.max_depth;
   j["rr_depth"] = s.rr_depth;
   j["scene"] = o.scene;
+  if (integrator == "gpt") {
+    j["shift"] = o.shift;
+    j["shift_threshold"] = o.shift_threshold;
+    j["recon"] = o.recon;
+    j["alpha"] = o.alpha;
+  }
   for (const auto& [k, v] : o.defines) j["defines"][k] = v;
   return j;
 }
@@ -59,7 +67,9 @@ int render_command(const Options& o) {
     scene.camera.filter_radius = o.filter == "box" ? 0.5f : o.filter == "tent" ? 1.0f : 2.0f;
   }
   std::string integrator = integrator_name(o, scene);
-  if (integrator != "pt") throw Error("unknown integrator '" + integrator + "' (available: pt)");
+  if (integrator != "pt" && integrator != "gpt") {
+    throw Error("unknown integrator '" + integrator + "' (available: pt, gpt)");
+  }
 
   RenderSettings settings;
   settings.seed = o.seed;
@@ -79,8 +89,21 @@ int render_command(const Options& o) {
   while (!effects.empty() && effects.back() == '\n') effects.pop_back();
   log::info(effects);
   EmbreeScene embree(scene, BuildQuality::High, &stats);
-  PathTracer tracer(ctx, scene, embree);
-  RenderResult result = tracer.render(settings);
+  RenderResult result;
+  if (integrator == "gpt") {
+    GptSettings gpt;
+    gpt.shift = o.shift == "replay" ? GPT_SHIFT_REPLAY : GPT_SHIFT_HYBRID;
+    gpt.shift_threshold = o.shift_threshold;
+    GradientPathTracer tracer(ctx, scene, embree, gpt);
+    GradientImages layers = tracer.render(settings);
+    ScopedTimer t(&stats, "recon/total");
+    result.image = gradient_image(ctx, layers, o.recon, o.alpha, &stats);
+    result.samples = layers.samples;
+    result.seconds = layers.seconds + t.elapsed();
+  } else {
+    PathTracer tracer(ctx, scene, embree);
+    result = tracer.render(settings);
+  }
   if (render_interrupted()) log::warn("interrupted: writing the ", result.samples, " spp rendered so far");
 
   std::string out = o.output.empty() ? default_output(o.scene) : o.output;

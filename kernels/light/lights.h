@@ -22,6 +22,8 @@ typedef struct LightSample {
   float pdf;        // solid-angle pdf including the light's selection probability; for delta
                     // lights the selection probability alone
   int delta;        // 1 for point, spot, directional
+  float2 bary;      // area lights: the sampled point's barycentrics on the light's triangle
+  float3 light_normal;  // area lights: the light's geometric normal at that point
 } LightSample;
 
 inline float light_pmf(const SceneData* s, int index) {
@@ -71,27 +73,26 @@ inline float area_pdf(const SceneData* s, int index, float area, float dist, flo
   return light_pmf(s, index) * dist * dist / (cos_light * area);
 }
 
-// Samples light `index` as seen from p. Returns 0 when the light cannot contribute.
-inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
+// Evaluates the light point already chosen in ls (ls->bary for area lights, ls->wi for lights
+// at infinity) as seen from p: direction, distance, arriving radiance and pdf. Next-event
+// estimation samples the point first; a gradient-domain offset path reconnects to the same point
+// from its own vertex. Returns 0 when the light cannot contribute.
+inline int light_connect(const SceneData* s, int index, float3 p, LightSample* ls) {
   __global const GdrLight* l = &s->lights[index];
   float pmf = light_pmf(s, index);
   ls->delta = 0;
   switch (l->type) {
 #if defined(GDR_LIGHT_AREA)
     case LIGHT_AREA: {
-      GdrTriangle tri = s->triangles[l->triangle];
-      float3 p0 = s->positions[tri.v[0]].xyz, p1 = s->positions[tri.v[1]].xyz, p2 = s->positions[tri.v[2]].xyz;
-      float2 b = sample_triangle_barycentrics(u);
-      float3 q = (1.0f - b.x - b.y) * p0 + b.x * p1 + b.y * p2;
-      Surface su = surface_at(s, (uint)l->triangle, b.x, b.y);
-      float3 d = q - p;
+      Surface su = surface_at(s, (uint)l->triangle, ls->bary.x, ls->bary.y);
+      float3 d = su.p - p;
       float dist = length(d);
       if (!(dist > 0.0f)) return 0;
       ls->wi = d / dist;
       ls->dist = dist;
-      float cos_light = dot(su.ng, -ls->wi);
       ls->radiance = area_radiance(s, index, su.ng, -ls->wi);
-      ls->pdf = area_pdf(s, index, su.area, dist, cos_light);
+      ls->pdf = area_pdf(s, index, su.area, dist, dot(su.ng, -ls->wi));
+      ls->light_normal = su.ng;
       return ls->pdf > 0.0f && isfinite(ls->pdf);
     }
 #endif
@@ -133,7 +134,6 @@ inline int light_sample(const SceneData* s, int index, float3 p, float2 u, Light
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
     case LIGHT_CONSTANT:
     case LIGHT_ENVMAP:
-      ls->wi = sample_uniform_sphere(u);
       ls->dist = INFINITY;
       ls->radiance = environment_radiance(s, l, ls->wi);
       ls->pdf = pmf * GDR_INV_4PI;
@@ -142,4 +142,12 @@ inline int light_sample(const SceneData* s, int index, float3 p, float2 u, Light
     default:
       return 0;
   }
+}
+
+// Samples a point on light `index` and evaluates it as seen from p.
+inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
+  int type = s->lights[index].type;
+  if (type == LIGHT_AREA) ls->bary = sample_triangle_barycentrics(u);
+  if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) ls->wi = sample_uniform_sphere(u);
+  return light_connect(s, index, p, ls);
 }

@@ -1,0 +1,108 @@
+// State of the gradient-domain path tracer (G-PT), shared by its kernels and the host loop.
+// Each pixel sample is a group: one base path and four offset paths through the neighbouring
+// pixels (+x, -x, +y, -y), traced in the same wavefront.
+#pragma once
+
+#define GPT_OFFSETS 4
+#define GPT_DIR_PX 0
+#define GPT_DIR_NX 1
+#define GPT_DIR_PY 2
+#define GPT_DIR_NY 3
+
+#define GPT_SHIFT_HYBRID 0  // half-vector copy + reconnection
+#define GPT_SHIFT_REPLAY 1  // random-number replay
+
+// What an offset path is doing.
+#define GPT_MODE_DEAD 0          // the shift failed: contributes nothing, the base takes full weight
+#define GPT_MODE_TRACE 1         // follows its own rays; its current vertex is its own hit
+#define GPT_MODE_RECONNECTING 2  // reconnected to the base's next vertex; visibility pending
+#define GPT_MODE_JOINED_RECENT 3 // joined the base at the base's current vertex
+#define GPT_MODE_JOINED 4        // shares all the base's vertices from here on
+
+typedef struct GptOffsetState {
+  float throughput[3];  // f(y) |J| / p(x) of the prefix so far
+  float ratio;          // p(y) |J| / p(x) of the prefix so far (MIS between the two directions)
+  float prev_pos[3];    // the offset's previous vertex (origin of the ray to its current vertex)
+  float last_pdf;       // the offset's own solid-angle pdf of that ray's direction (0: delta)
+  float dir[3];         // direction of the ray to the current vertex
+  int mode;             // GPT_MODE_*
+  unsigned int prim;    // current vertex (TRACE) as Embree found it; GDR_INVALID_ID for a miss
+  float b1, b2;
+  float t;
+  int visible;          // RECONNECTING: the reconnection segment was unoccluded
+  int last_delta;       // the ray to the current vertex left a delta lobe
+  int pad0, pad1;
+} GptOffsetState;
+
+typedef struct GptBaseState {
+  float throughput[3];
+  float bsdf_pdf;       // solid-angle pdf of the last BSDF sample (0 after a delta lobe)
+  unsigned int pixel;
+  unsigned int sample;
+  int depth;
+  int flags;            // PATH_FLAG_*
+  // The vertex x_k shaded in the last shade step, for the shift step that follows.
+  unsigned int prim;
+  float b1, b2;
+  int sample_delta;     // the BSDF sample at x_k took a delta lobe
+  float wi[3];          // sampled direction at x_k (world)
+  int sample_transmitted;
+  float wo[3];          // direction from x_k toward the previous vertex (world)
+  float sample_eta;     // relative IOR across x_k (wi side / wo side)
+  float rr_prob;        // Russian-roulette survival probability applied at x_k (1: none)
+  float pad0, pad1, pad2;
+} GptBaseState;
+
+typedef struct GdrGptParams {
+  unsigned int seed;
+  unsigned int first_pixel;  // group g traces pixel first_pixel + g
+  unsigned int group_count;
+  unsigned int sample;
+  int max_depth;
+  int rr_depth;
+  int light_count;
+  int env_light;
+  float scene_radius;
+  int shift;              // GPT_SHIFT_*
+  float shift_threshold;  // roughness at or below which a vertex is glossy (not reconnectable)
+  int width;
+  int height;
+  int pad0, pad1, pad2;
+} GdrGptParams;
+
+// Accumulators per group (float4 each): contributions of the base to the pair with neighbour k,
+// contributions of offset k, and emission seen directly from the camera (kept out of gradients).
+#define GPT_ACC_BASE(k) (k)
+#define GPT_ACC_OFFSET(k) (4 + (k))
+#define GPT_ACC_DIRECT 8
+#define GPT_ACC_COUNT 9
+
+// Next-event contributions waiting for their shadow rays (float4 each, per group): the base's
+// share for pair k and joined offset k's (both behind the base's shadow ray), and traced offset
+// k's (behind its own shadow ray).
+#define GPT_PEND_BASE(k) (k)
+#define GPT_PEND_JOINED(k) (4 + (k))
+#define GPT_PEND_OWN(k) (8 + (k))
+#define GPT_PEND_COUNT 12
+
+// Shadow-ray ids: group * 8 + kind, kind 0 = the base's ray, 1 + k = offset k's own ray.
+#define GPT_SHADOW_ID(group, kind) ((group) * 8u + (uint)(kind))
+
+// Counters (atomic_inc), read after each step.
+#define GPT_COUNTER_BASE_RAYS 0
+#define GPT_COUNTER_OFFSET_RAYS 1
+#define GPT_COUNTER_SHADOW_RAYS 2
+#define GPT_COUNTER_RECONNECT_RAYS 3
+#define GPT_COUNTER_NONFINITE 4
+#define GPT_COUNTER_SHIFT_RECONNECT 5      // successful shifts, by kind
+#define GPT_COUNTER_SHIFT_HALF_VECTOR 6
+#define GPT_COUNTER_SHIFT_DELTA 7
+#define GPT_COUNTER_SHIFT_DIRECTION 8      // direction copy toward the environment
+#define GPT_COUNTER_SHIFT_REPLAY 9
+#define GPT_COUNTER_FAIL_OUTSIDE 10        // offset pixel outside the image
+#define GPT_COUNTER_FAIL_LOBE 11           // delta vs non-delta lobe mismatch, or lobe missing
+#define GPT_COUNTER_FAIL_REFRACTION 12     // total internal reflection in one path only
+#define GPT_COUNTER_FAIL_OCCLUDED 13       // reconnection segment blocked
+#define GPT_COUNTER_FAIL_ENVIRONMENT 14    // one path escaped, the other hit geometry
+#define GPT_COUNTER_FAIL_ZERO 15           // zero pdf or value, or inconsistent sides
+#define GPT_COUNTER_COUNT 16
