@@ -1,0 +1,112 @@
+// G-PT is unbiased: its gradients (plus the difference of the directly seen emission, which is
+// kept out of the gradients) and its primal agree with neighbour differences and pixels of the
+// path tracer. K independent runs (seeds 1..K) of each; per 4x4 pixel block, Welch's t-test on
+// the run means; Šidák-corrected so each scene/shift case has a false-positive rate of 1e-3.
+#include <gtest/gtest.h>
+
+#include "integrators/gpt/gradient_path_tracer.h"
+#include "scene/load_scene.h"
+#include "support/render.h"
+#include "support/statistics.h"
+
+namespace gdr {
+namespace {
+
+constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4, kMaxDepth = 5;
+
+struct Stat {  // per run, per block: sums of dx, dy and of the primal
+  std::vector<double> dx, dy, primal;
+};
+
+Stat block_sums(int w, int h, const std::vector<float>& dx, const std::vector<float>& dy,
+                const std::vector<float>& primal) {
+  int bw = w / kBlock, bh = h / kBlock;
+  Stat s{std::vector<double>(bw * bh), std::vector<double>(bw * bh), std::vector<double>(bw * bh)};
+  for (int y = 0; y < bh * kBlock; ++y) {
+    for (int x = 0; x < bw * kBlock; ++x) {
+      int b = (y / kBlock) * bw + x / kBlock;
+      for (int c = 0; c < 3; ++c) {
+        size_t i = 3 * (size_t(y) * w + x) + c;
+        if (x + 1 < w) s.dx[b] += dx[i];
+        if (y + 1 < h) s.dy[b] += dy[i];
+        s.primal[b] += primal[i];
+      }
+    }
+  }
+  return s;
+}
+
+// Neighbour differences of an RGB image, as G-PT's dx/dy define them.
+void differences(int w, int h, const std::vector<float>& img, std::vector<float>& dx, std::vector<float>& dy) {
+  dx.assign(img.size(), 0.0f);
+  dy.assign(img.size(), 0.0f);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        size_t i = 3 * (size_t(y) * w + x) + c;
+        if (x + 1 < w) dx[i] = img[i + 3] - img[i];
+        if (y + 1 < h) dy[i] = img[i + 3 * size_t(w)] - img[i];
+      }
+    }
+  }
+}
+
+void expect_unbiased(const std::string& scene_file, int shift) {
+  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
+  const int w = kWidth;
+  const int h = std::max(kBlock, (kWidth * scene.camera.height / scene.camera.width) / kBlock * kBlock);
+  scene.camera.width = w;
+  scene.camera.height = h;
+  EmbreeScene embree(scene, BuildQuality::Low);
+  Context& ctx = test::default_context();
+  PathTracer pt(ctx, scene, embree);
+  GptSettings gs;
+  gs.shift = shift;
+  GradientPathTracer gpt(ctx, scene, embree, gs);
+  std::vector<Stat> a, b;
+  for (int k = 0; k < kRuns; ++k) {
+    RenderSettings s;
+    s.spp = kSpp;
+    s.seed = 1 + k;
+    s.max_depth = kMaxDepth;
+    GradientImages g = gpt.render(s);
+    std::vector<float> ddx, ddy;
+    differences(w, h, g.direct, ddx, ddy);
+    for (size_t i = 0; i < g.dx.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(g.dx[i]) && std::isfinite(g.dy[i]) && std::isfinite(g.primal[i]));
+      g.dx[i] += ddx[i];
+      g.dy[i] += ddy[i];
+    }
+    a.push_back(block_sums(w, h, g.dx, g.dy, g.primal));
+    s.seed = 1000 + k;
+    std::vector<float> img = pt.render(s).image.rgb_layer("");
+    std::vector<float> pdx, pdy;
+    differences(w, h, img, pdx, pdy);
+    b.push_back(block_sums(w, h, pdx, pdy, img));
+  }
+  const int blocks = static_cast<int>(a[0].dx.size());
+  const double alpha = test::sidak(1e-3, 3 * blocks);
+  auto column = [](const std::vector<Stat>& runs, std::vector<double> Stat::*field, int blk) {
+    std::vector<double> v;
+    for (const Stat& s : runs) v.push_back((s.*field)[blk]);
+    return v;
+  };
+  for (int blk = 0; blk < blocks; ++blk) {
+    EXPECT_GT(test::welch_p(column(a, &Stat::dx, blk), column(b, &Stat::dx, blk)), alpha)
+        << scene_file << " block " << blk << ": dx is biased";
+    EXPECT_GT(test::welch_p(column(a, &Stat::dy, blk), column(b, &Stat::dy, blk)), alpha)
+        << scene_file << " block " << blk << ": dy is biased";
+    EXPECT_GT(test::welch_p(column(a, &Stat::primal, blk), column(b, &Stat::primal, blk)), alpha)
+        << scene_file << " block " << blk << ": the primal differs from path tracing";
+  }
+}
+
+TEST(GptUnbiased, DiffuseCornellBoxHybrid) { expect_unbiased("cornell-box.xml", GPT_SHIFT_HYBRID); }
+TEST(GptUnbiased, DiffuseCornellBoxReplay) { expect_unbiased("cornell-box.xml", GPT_SHIFT_REPLAY); }
+TEST(GptUnbiased, GlossyPlatesHybrid) { expect_unbiased("glossy-plates.xml", GPT_SHIFT_HYBRID); }
+TEST(GptUnbiased, GlossyPlatesReplay) { expect_unbiased("glossy-plates.xml", GPT_SHIFT_REPLAY); }
+TEST(GptUnbiased, MirrorAndGlassHybrid) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_HYBRID); }
+TEST(GptUnbiased, MirrorAndGlassReplay) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_REPLAY); }
+
+}  // namespace
+}  // namespace gdr
