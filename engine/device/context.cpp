@@ -3,7 +3,7 @@
 #include "device/kernel_cache.h"
 #include "device/kernel_sources.h"
 #include "device/runtime_env.h"
-#include "util/hash.h"
+#include "stats/process_clock.h"
 #include "util/log.h"
 
 namespace gdr {
@@ -129,6 +129,10 @@ void Kernel::run_2d(size_t width, size_t height, size_t local_x, size_t local_y)
 }
 
 void Kernel::launch(cl_uint dims, const size_t* global, const size_t* local, size_t items) {
+  if (context_->stats() && !context_->stats()->has("startup/first_kernel_launch_seconds")) {
+    // From process start to here: runtime set-up, scene load, BVH and kernel builds.
+    context_->stats()->set("startup/first_kernel_launch_seconds", seconds_since_process_start());
+  }
   cl_event event = nullptr;
   cl_check(clEnqueueNDRangeKernel(context_->queue(), kernel_, dims, nullptr, global, local, 0, nullptr, &event),
            ("launching kernel " + name_).c_str());
