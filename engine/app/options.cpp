@@ -32,6 +32,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--stats", o.stats_path, "Write timers and counters to this JSON file");
   app.add_option("--threads", o.threads, "Host and CPU-device threads (default: the usable CPUs)")
       ->check(CLI::PositiveNumber);
+  app.add_flag("--aux", o.aux, "Also write albedo, normal and depth layers (first hit; pt)");
   app.add_flag("--strict", o.strict, "Unsupported scene features are errors instead of warnings");
   app.add_option("--filter", o.filter, "Pixel filter: box | tent | gaussian (default: the scene's)")
       ->check(CLI::IsMember({"box", "tent", "gaussian"}));

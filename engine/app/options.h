@@ -27,6 +27,7 @@ struct Options {
   std::string stats_path;
   int threads = 0;
   bool strict = false;
+  bool aux = false;  // albedo, normal, depth layers
   std::string filter;  // overrides the scene's reconstruction filter
   std::string strategy = "mis";  // pt: mis | bsdf | light
   int max_depth = -1;  // overrides the scene's integrator max_depth (-1: keep)

@@ -78,6 +78,7 @@ int render_command(const Options& o) {
   settings.max_depth = o.max_depth > 0 ? o.max_depth : scene.max_depth;
   settings.strategy = o.strategy == "bsdf" ? PT_STRATEGY_BSDF : o.strategy == "light" ? PT_STRATEGY_LIGHT : PT_STRATEGY_MIS;
   settings.progress = !o.quiet;
+  settings.aux = o.aux;
   stats.set("settings", settings_json(o, settings, integrator));
 
   Context ctx(select_device(o.device), &stats);

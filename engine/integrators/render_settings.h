@@ -15,6 +15,7 @@ struct RenderSettings {
   int rr_depth = 5;                    // bounces before Russian roulette
   int strategy = 0;                    // PT_STRATEGY_* (kernels/shared/pt_types.h)
   bool progress = false;               // progress line on stderr
+  bool aux = false;                    // also output albedo, normal and depth layers (pt)
 };
 
 struct RenderResult {

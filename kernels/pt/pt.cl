@@ -155,3 +155,23 @@ __kernel void pt_shadow(uint count, __global const GdrRay* shadow_rays, __global
   if (k >= count) return;
   if (shadow_rays[k].tfar >= 0.0f) film[shadow_rays[k].id] += shadow_values[k];
 }
+
+// Auxiliary layers from the camera rays' first hits (for denoisers and inspection): albedo (the
+// diffuse reflectance, or the specular scale of a material without one), shading normal and
+// distance. Misses add zero.
+__kernel void pt_aux(GdrPtParams params, uint count, __global const GdrRayHit* rays, __global float4* albedo,
+                     __global float4* normal, __global float* depth, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  GdrRayHit rh = rays[i];
+  if (rh.hit.geomID == GDR_INVALID_ID) return;
+  SceneData s = scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
+                                light_cdf, params.light_count, params.env_light, params.scene_radius);
+  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  Bsdf b = bsdf_from_material(&s.materials[su.material], surface_reflectance(&s, &su));
+  float3 a = bsdf_has_diffuse_lobe(&b) ? b.diffuse : b.specular_r;
+  uint pixel = params.first_pixel + rh.ray.id;
+  albedo[pixel] += (float4)(a, 0.0f);
+  normal[pixel] += (float4)(su.ns, 0.0f);
+  depth[pixel] += rh.ray.tfar;
+}

@@ -41,7 +41,11 @@ PathTracer::PathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree)
       shadow_rays_(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
       shadow_values_(ctx, capacity_),
       counters_(ctx, PT_COUNTER_COUNT),
-      film_(ctx, size_t(scene.camera.width) * scene.camera.height) {}
+      film_(ctx, size_t(scene.camera.width) * scene.camera.height),
+      aux_(make_kernel(ctx, scene, "pt_aux")),
+      aux_albedo_(ctx, film_.size()),
+      aux_normal_(ctx, film_.size()),
+      aux_depth_(ctx, film_.size()) {}
 
 void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
   Stats* stats = ctx_.stats();
@@ -64,6 +68,11 @@ void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, ui
     {
       auto rays = rays_[cur].map(active);
       embree_.intersect(rays.data(), active, depth == 0, depth == 0 ? "camera" : "bounce");
+    }
+    if (depth == 0 && settings.aux) {
+      aux_.args(params, active, rays_[cur], aux_albedo_, aux_normal_, aux_depth_);
+      device_scene_.set_args(aux_, 6);
+      aux_.run(active);
     }
     counters_.fill(0u);
     shade_.args(params, active, rays_[cur], queue_[cur], rays_[1 - cur], queue_[1 - cur], shadow_rays_,
@@ -90,6 +99,11 @@ RenderResult PathTracer::render(const RenderSettings& settings) {
   ScopedTimer timer(stats, "render/trace");
   const uint32_t pixels = uint32_t(scene_.camera.width) * scene_.camera.height;
   film_.fill(Vec4{});
+  if (settings.aux) {
+    aux_albedo_.fill(Vec4{});
+    aux_normal_.fill(Vec4{});
+    aux_depth_.fill(0.0f);
+  }
   RenderResult result;
   result.samples = run_progressive(settings, [&](int sample) {
     for (uint32_t first = 0; first < pixels; first += uint32_t(capacity_)) {
@@ -107,6 +121,18 @@ RenderResult PathTracer::render(const RenderSettings& settings) {
   }
   result.image = Image(scene_.camera.width, scene_.camera.height, {});
   result.image.add_rgb_layer("", rgb);
+  if (settings.aux) {
+    std::vector<Vec4> albedo = aux_albedo_.read(), normal = aux_normal_.read();
+    std::vector<float> depth = aux_depth_.read(), a(size_t(pixels) * 3), n(size_t(pixels) * 3), d(size_t(pixels) * 3);
+    for (size_t p = 0; p < pixels; ++p) {
+      a[3 * p] = albedo[p].x * scale, a[3 * p + 1] = albedo[p].y * scale, a[3 * p + 2] = albedo[p].z * scale;
+      n[3 * p] = normal[p].x * scale, n[3 * p + 1] = normal[p].y * scale, n[3 * p + 2] = normal[p].z * scale;
+      d[3 * p] = d[3 * p + 1] = d[3 * p + 2] = depth[p] * scale;
+    }
+    result.image.add_rgb_layer("albedo", a);
+    result.image.add_rgb_layer("normal", n);
+    result.image.add_rgb_layer("depth", d);
+  }
   if (stats) {
     stats->add_count("samples/paths", uint64_t(pixels) * result.samples);
     stats->set("render/spp", result.samples);

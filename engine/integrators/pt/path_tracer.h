@@ -36,6 +36,10 @@ class PathTracer {
   Buffer<Vec4> shadow_values_;
   Buffer<cl_uint> counters_;
   Buffer<Vec4> film_;
+  // Auxiliary layers (RenderSettings::aux): first-hit albedo, normal and depth sums.
+  Kernel aux_;
+  Buffer<Vec4> aux_albedo_, aux_normal_;
+  Buffer<float> aux_depth_;
 };
 
 // The -D defines of the path-tracing kernels for a scene: only its BSDF and light types.
