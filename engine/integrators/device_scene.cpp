@@ -3,11 +3,24 @@
 #include <algorithm>
 #include <cmath>
 
+#include "integrators/environment_distribution.h"
 #include "integrators/light_distribution.h"
 
 namespace gdr {
+namespace {
 
-DeviceScene::DeviceScene(Context& ctx, const Scene& s)
+// The lights as the kernels see them (with their sampling tables' offsets), and the tables.
+std::vector<GdrLight> device_lights(const Scene& s, std::vector<float>& env_tables) {
+  std::vector<GdrLight> lights = s.lights;
+  build_environment_tables(s, lights, env_tables);
+  return lights;
+}
+
+}  // namespace
+
+DeviceScene::DeviceScene(Context& ctx, const Scene& s) : DeviceScene(ctx, s, std::vector<float>()) {}
+
+DeviceScene::DeviceScene(Context& ctx, const Scene& s, std::vector<float> env_tables)
     : triangles_(ctx, s.triangles, CL_MEM_READ_ONLY),
       positions_(ctx, s.positions, CL_MEM_READ_ONLY),
       normals_(ctx, s.normals, CL_MEM_READ_ONLY),
@@ -16,8 +29,9 @@ DeviceScene::DeviceScene(Context& ctx, const Scene& s)
       materials_(ctx, s.materials, CL_MEM_READ_ONLY),
       textures_(ctx, s.textures, CL_MEM_READ_ONLY),
       texels_(ctx, s.texels, CL_MEM_READ_ONLY),
-      lights_(ctx, s.lights, CL_MEM_READ_ONLY),
+      lights_(ctx, device_lights(s, env_tables), CL_MEM_READ_ONLY),
       light_cdf_(ctx, light_selection_cdf(s), CL_MEM_READ_ONLY),
+      env_cdf_(ctx, env_tables, CL_MEM_READ_ONLY),
       camera_(ctx, std::vector<GdrCamera>{s.camera}, CL_MEM_READ_ONLY),
       light_count_(static_cast<int>(s.lights.size())) {
   for (size_t i = 0; i < s.lights.size(); ++i) {
@@ -39,6 +53,7 @@ void DeviceScene::set_args(Kernel& k, cl_uint first) const {
   k.set_arg(first + 7, texels_);
   k.set_arg(first + 8, lights_);
   k.set_arg(first + 9, light_cdf_);
+  k.set_arg(first + 10, env_cdf_);
 }
 
 }  // namespace gdr

@@ -21,6 +21,9 @@ class DeviceScene {
   const Buffer<GdrCamera>& camera() const { return camera_; }
 
  private:
+  // env_tables is filled while lights_ is built (members initialise in declaration order).
+  DeviceScene(Context& context, const Scene& scene, std::vector<float> env_tables);
+
   Buffer<GdrTriangle> triangles_;
   Buffer<Vec4> positions_;
   Buffer<Vec4> normals_;
@@ -31,6 +34,7 @@ class DeviceScene {
   Buffer<Vec4> texels_;
   Buffer<GdrLight> lights_;
   Buffer<float> light_cdf_;
+  Buffer<float> env_cdf_;
   Buffer<GdrCamera> camera_;
   int light_count_ = 0;
   int env_light_ = -1;

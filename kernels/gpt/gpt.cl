@@ -22,7 +22,7 @@
 #define OFFSET_PIXEL_DY(k) ((k) == GPT_DIR_PY ? 1 : (k) == GPT_DIR_NY ? -1 : 0)
 
 inline SceneData gpt_scene(const GdrGptParams* p, SCENE_DATA_ARGS) {
-  return scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights, light_cdf,
+  return scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights, light_cdf, env_cdf,
                          p->light_count, p->env_light, p->scene_radius);
 }
 
@@ -124,7 +124,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   uint q = get_global_id(0);
   if (q >= count) return;
   SceneData s = gpt_scene(&params, triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                          light_cdf);
+                          light_cdf, env_cdf);
   GdrRayHit rh = base_in[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];
@@ -158,7 +158,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       if (direct) {
         acc_add(acc, base.pixel, GPT_ACC_DIRECT, checked(beta * le, counters));
       } else {
-        float p_light = last_specular ? 0.0f : environment_pdf(&s);
+        float p_light = last_specular ? 0.0f : environment_pdf(&s, dir);
         for (int k = 0; k < GPT_OFFSETS; ++k) {
           float w;
           float3 c_off = (float3)(0.0f);
@@ -166,7 +166,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
             w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
           } else {
             float p_off = o[k].last_pdf;
-            float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s);
+            float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, dir);
             w = gpt_weight(p_bsdf, p_light, o[k].ratio * safe_div(p_bsdf, p_off), p_off, q_off);
             c_off = vload3(0, o[k].throughput) * environment_radiance(&s, env, vload3(0, o[k].dir));
           }
@@ -406,7 +406,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
   uint q = get_global_id(0);
   if (q >= count) return;
   SceneData s = gpt_scene(&params, triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                          light_cdf);
+                          light_cdf, env_cdf);
   GdrRayHit rh = base_rays[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];

@@ -41,25 +41,93 @@ inline int light_select(const SceneData* s, float u) {
   return lo;
 }
 
-// Environment emission seen along world direction `dir` (uv lat-long as Mitsuba's envmap).
+// Mitsuba's lat-long map: u from atan2(x, -z), v = theta / pi measured from +y (local frame).
+inline float2 envmap_uv(float3 d) {
+  float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
+  return (float2)(u - floor(u), acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F);
+}
+inline float3 envmap_direction(float2 uv, float* sin_theta) {
+  float theta = M_PI_F * uv.y, phi = 2.0f * M_PI_F * uv.x;
+  *sin_theta = sin(theta);
+  return (float3)(*sin_theta * sin(phi), cos(theta), -*sin_theta * cos(phi));
+}
+
+inline void copy_matrix(__global const float* m, float* out) {
+  for (int i = 0; i < 12; ++i) out[i] = m[i];
+}
+
+// Environment emission seen along world direction `dir`.
 inline float3 environment_radiance(const SceneData* s, __global const GdrLight* l, float3 dir) {
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     float to_local[12];
-    for (int i = 0; i < 12; ++i) to_local[i] = l->to_local[i];
-    float3 d = xform_vector(to_local, dir);
-    float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
-    float v = acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F;
+    copy_matrix(l->to_local, to_local);
+    float2 uv = envmap_uv(xform_vector(to_local, dir));
     // texture_eval flips v for bitmaps (v = 0 at the bottom); the lat-long map starts at the top.
-    return texture_eval(s, l->texture, (float2)(u, 1.0f - v)) * vload3(0, l->radiance);
+    return texture_eval(s, l->texture, (float2)(uv.x, 1.0f - uv.y)) * vload3(0, l->radiance);
   }
 #endif
   return vload3(0, l->radiance);
 }
 
-// Solid-angle pdf of sampling `dir` toward the environment (uniform sphere), selection included.
-inline float environment_pdf(const SceneData* s) {
-  return s->env_light >= 0 ? light_pmf(s, s->env_light) * GDR_INV_4PI : 0.0f;
+// Index i with cdf[i] <= u < cdf[i + 1] among n intervals, and u rescaled to [0, 1) inside it.
+inline int sample_cdf(__global const float* cdf, int n, float u, float* rescaled) {
+  int lo = 0, hi = n - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (cdf[mid + 1] <= u) lo = mid + 1;
+    else hi = mid;
+  }
+  float width = cdf[lo + 1] - cdf[lo];
+  *rescaled = width > 0.0f ? clamp((u - cdf[lo]) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
+  return lo;
+}
+
+// Envmap sampling tables at l->distribution_offset: the rows' cdf (height + 1 values), then each
+// row's cdf over its columns (width + 1 values), built from luminance * sin(theta).
+inline float envmap_uv_pdf(const SceneData* s, __global const GdrLight* l, float2 uv) {
+  __global const GdrTexture* t = &s->textures[l->texture];
+  int w = t->width, h = t->height;
+  int c = min((int)(uv.x * w), w - 1), r = min((int)(uv.y * h), h - 1);
+  __global const float* rows = s->env_cdf + l->distribution_offset;
+  __global const float* cols = rows + (h + 1) + r * (w + 1);
+  return (rows[r + 1] - rows[r]) * h * (cols[c + 1] - cols[c]) * w;
+}
+
+// Solid-angle pdf of sampling world direction `dir` toward the environment, selection included.
+inline float environment_pdf(const SceneData* s, float3 dir) {
+  if (s->env_light < 0) return 0.0f;
+  float pmf = light_pmf(s, s->env_light);
+#if defined(GDR_LIGHT_ENVMAP)
+  __global const GdrLight* l = &s->lights[s->env_light];
+  if (l->type == LIGHT_ENVMAP) {
+    float to_local[12];
+    copy_matrix(l->to_local, to_local);
+    float2 uv = envmap_uv(xform_vector(to_local, dir));
+    float sin_theta = sin(M_PI_F * uv.y);
+    return sin_theta > 0.0f ? pmf * envmap_uv_pdf(s, l, uv) / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
+  }
+#endif
+  return pmf * GDR_INV_4PI;
+}
+
+// A direction toward the environment: by the envmap's luminance, or uniform for a constant one.
+inline float3 environment_sample(const SceneData* s, __global const GdrLight* l, float2 u) {
+#if defined(GDR_LIGHT_ENVMAP)
+  if (l->type == LIGHT_ENVMAP) {
+    __global const GdrTexture* t = &s->textures[l->texture];
+    __global const float* rows = s->env_cdf + l->distribution_offset;
+    float ur, uc;
+    int r = sample_cdf(rows, t->height, u.y, &ur);
+    int c = sample_cdf(rows + (t->height + 1) + r * (t->width + 1), t->width, u.x, &uc);
+    float sin_theta;
+    float3 d = envmap_direction((float2)((c + uc) / t->width, (r + ur) / t->height), &sin_theta);
+    float to_world[12];
+    copy_matrix(l->to_world, to_world);
+    return normalize(xform_vector(to_world, d));
+  }
+#endif
+  return sample_uniform_sphere(u);
 }
 
 // Emission of area light `index` toward `wo` (unit, pointing away from the surface with normal ng).
@@ -136,8 +204,8 @@ inline int light_connect(const SceneData* s, int index, float3 p, LightSample* l
     case LIGHT_ENVMAP:
       ls->dist = INFINITY;
       ls->radiance = environment_radiance(s, l, ls->wi);
-      ls->pdf = pmf * GDR_INV_4PI;
-      return 1;
+      ls->pdf = environment_pdf(s, ls->wi);
+      return ls->pdf > 0.0f;
 #endif
     default:
       return 0;
@@ -148,6 +216,6 @@ inline int light_connect(const SceneData* s, int index, float3 p, LightSample* l
 inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
   int type = s->lights[index].type;
   if (type == LIGHT_AREA) ls->bary = sample_triangle_barycentrics(u);
-  if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) ls->wi = sample_uniform_sphere(u);
+  if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) ls->wi = environment_sample(s, &s->lights[index], u);
   return light_connect(s, index, p, ls);
 }

@@ -59,7 +59,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
   uint q = get_global_id(0);
   if (q >= count) return;
   SceneData s = scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                                light_cdf, params.light_count, params.env_light, params.scene_radius);
+                                light_cdf, env_cdf, params.light_count, params.env_light, params.scene_radius);
   uint slot = queue_in[q];
   GdrPathState st = paths[slot];
   GdrRayHit rh = rays_in[q];
@@ -70,7 +70,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
     if (s.env_light >= 0) {
       float3 le = environment_radiance(&s, &s.lights[s.env_light], dir);
-      film_add(film, st.pixel, beta * le * emission_weight(&st, params.strategy, environment_pdf(&s)), counters);
+      film_add(film, st.pixel, beta * le * emission_weight(&st, params.strategy, environment_pdf(&s, dir)), counters);
     }
 #endif
     return;
@@ -166,7 +166,7 @@ __kernel void pt_aux(GdrPtParams params, uint count, __global const GdrRayHit* r
   GdrRayHit rh = rays[i];
   if (rh.hit.geomID == GDR_INVALID_ID) return;
   SceneData s = scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                                light_cdf, params.light_count, params.env_light, params.scene_radius);
+                                light_cdf, env_cdf, params.light_count, params.env_light, params.scene_radius);
   Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
   Bsdf b = bsdf_from_material(&s.materials[su.material], surface_reflectance(&s, &su));
   float3 a = bsdf_has_diffuse_lobe(&b) ? b.diffuse : b.specular_r;

@@ -14,6 +14,7 @@ typedef struct SceneData {
   __global const float4* texels;
   __global const GdrLight* lights;
   __global const float* light_cdf;  // light_count + 1 entries, cdf[0] = 0, cdf[light_count] = 1
+  __global const float* env_cdf;    // envmap sampling tables (engine/integrators/environment_distribution.h)
   int light_count;
   int env_light;  // index of the environment light, or -1
   float scene_radius;
@@ -24,7 +25,8 @@ typedef struct SceneData {
   __global const GdrTriangle *triangles, __global const float4 *positions,                      \
       __global const float4 *normals, __global const float2 *uvs, __global const GdrShape *shapes, \
       __global const GdrMaterial *materials, __global const GdrTexture *textures,               \
-      __global const float4 *texels, __global const GdrLight *lights, __global const float *light_cdf
+      __global const float4 *texels, __global const GdrLight *lights, __global const float *light_cdf, \
+      __global const float *env_cdf
 
 inline SceneData scene_data_make(SCENE_DATA_ARGS, int light_count, int env_light, float scene_radius) {
   SceneData s;
@@ -38,6 +40,7 @@ inline SceneData scene_data_make(SCENE_DATA_ARGS, int light_count, int env_light
   s.texels = texels;
   s.lights = lights;
   s.light_cdf = light_cdf;
+  s.env_cdf = env_cdf;
   s.light_count = light_count;
   s.env_light = env_light;
   s.scene_radius = scene_radius;

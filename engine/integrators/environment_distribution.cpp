@@ -1,0 +1,48 @@
+#include "integrators/environment_distribution.h"
+
+#include <cmath>
+
+namespace gdr {
+namespace {
+
+// Normalised cdf of `weights` (uniform when they sum to zero).
+void append_cdf(const std::vector<double>& weights, std::vector<float>& out) {
+  double total = 0;
+  for (double w : weights) total += w;
+  double acc = 0;
+  out.push_back(0.0f);
+  for (size_t i = 0; i < weights.size(); ++i) {
+    acc += total > 0 ? weights[i] / total : 1.0 / weights.size();
+    out.push_back(i + 1 == weights.size() ? 1.0f : static_cast<float>(acc));
+  }
+}
+
+}  // namespace
+
+void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights, std::vector<float>& tables) {
+  constexpr double pi = 3.14159265358979323846;
+  for (GdrLight& l : lights) {
+    if (l.type != LIGHT_ENVMAP || l.texture < 0) continue;
+    const GdrTexture& t = scene.textures[l.texture];
+    const int w = t.width, h = t.height;
+    l.distribution_offset = static_cast<int>(tables.size());
+    std::vector<double> row_weight(h);
+    std::vector<float> columns;
+    columns.reserve(size_t(h) * (w + 1));
+    for (int r = 0; r < h; ++r) {
+      double sin_theta = std::sin(pi * (r + 0.5) / h);
+      std::vector<double> weight(w);
+      for (int c = 0; c < w; ++c) {
+        const Vec4& texel = scene.texels[size_t(t.offset) + size_t(r) * w + c];
+        double lum = 0.212671 * texel.x + 0.715160 * texel.y + 0.072169 * texel.z;
+        weight[c] = std::isfinite(lum) && lum > 0 ? lum * sin_theta : 0.0;
+        row_weight[r] += weight[c];
+      }
+      append_cdf(weight, columns);
+    }
+    append_cdf(row_weight, tables);
+    tables.insert(tables.end(), columns.begin(), columns.end());
+  }
+}
+
+}  // namespace gdr
