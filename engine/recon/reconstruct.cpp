@@ -7,6 +7,7 @@
 #include <string>
 
 #include "recon/cg_solver.h"
+#include "recon/dct_solver.h"
 #include "recon/fast_solver.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -20,6 +21,8 @@ namespace {
 // objective than 20 x 50 CG iterations on the benchmark frame (tests/bench/bench_recon.cpp).
 constexpr double kFastL2Tolerance = 1e-4;
 constexpr double kFastL1RoundTolerance = 0.3;
+// Below this alpha the k = 0 system of the direct solve is too close to singular in float.
+constexpr float kDctMinAlpha = 1e-3f;
 
 void check_input(int width, int height, const std::vector<float>& v, const char* what) {
   size_t expected = size_t(width) * size_t(height) * 3;
@@ -80,6 +83,13 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
   ReconResult result;
   if (!l1) {
     problem.set_l2_weights(settings.alpha);
+    // With every term present the weights are uniform and a direct solve gives x; the PCG then
+    // only checks its residual (and polishes it, should float rounding leave it above tolerance).
+    if (fast && problem.nonfinite_inputs() == 0 && std::isfinite(settings.alpha) &&
+        settings.alpha >= kDctMinAlpha && DctSolver::supports(height)) {
+      problem.build_rhs();
+      DctSolver(ctx, width, height).solve(problem.system(), settings.alpha);
+    }
     SolveOutcome o = solver.solve(problem, cap, l2_tol);
     result.iterations = o.iterations;
     result.residual = o.residual;
