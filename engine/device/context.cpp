@@ -26,6 +26,7 @@ Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stat
 }
 
 Context::~Context() {
+  kept_.clear();
   programs_.clear();
   if (queue_) clReleaseCommandQueue(queue_);
   if (context_) clReleaseContext(context_);

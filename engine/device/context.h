@@ -38,12 +38,18 @@ class Context {
 
   void finish() const;
 
+  // A slot for an object that a subsystem keeps with this context between calls (device buffers
+  // it reuses, so that repeated calls do not allocate and first-touch fresh memory each time).
+  // Empty until the caller fills it; released before the context.
+  std::shared_ptr<void>& kept(const std::string& key) { return kept_[key]; }
+
  private:
   DeviceInfo device_;
   Stats* stats_;
   cl_context context_ = nullptr;
   cl_command_queue queue_ = nullptr;
   std::map<std::string, std::shared_ptr<Program>> programs_;
+  std::map<std::string, std::shared_ptr<void>> kept_;
 };
 
 class Kernel;
