@@ -20,7 +20,7 @@ namespace {
 // round stops once its residual fell by this factor; inexact rounds still reach a lower L1
 // objective than 20 x 50 CG iterations on the benchmark frame (tests/bench/bench_recon.cpp).
 constexpr double kFastL2Tolerance = 1e-4;
-constexpr double kFastL1RoundTolerance = 0.3;
+constexpr double kFastL1RoundTolerance = 0.4;
 // Below this alpha the k = 0 system of the direct solve is too close to singular in float.
 constexpr float kDctMinAlpha = 1e-3f;
 
@@ -97,6 +97,9 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
   const bool l1 = settings.norm == ReconNorm::L1;
   const bool fast = settings.solver == ReconSettings::Solver::Fast;
   auto start = std::chrono::steady_clock::now();
+  // The solvers' launches are queued without waiting on each (the host reads a residual per
+  // iteration anyway, which keeps it in step).
+  DeferredTiming deferred(ctx);
 
   Workspace& ws = workspace(ctx, settings, width, height);
   ReconSystem& problem = ws.problem;
