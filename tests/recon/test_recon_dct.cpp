@@ -2,6 +2,9 @@
 // its use (or fallback) inside reconstruct().
 #include <gtest/gtest.h>
 
+#include <memory>
+
+#include "recon/cg_solver.h"
 #include "recon/dct_solver.h"
 #include "recon/reconstruct.h"
 #include "recon_fixtures.h"
@@ -74,6 +77,40 @@ TEST(ReconDct, ReconstructUsesItOrFallsBack) {
     ReconResult cg = reconstruct(test::default_context(), c.w, c.h, p.primal, p.dx, p.dy, reference, nullptr);
     EXPECT_LT(test::max_abs_error(fast.rgb, cg.rgb), 1e-3);
   }
+}
+
+}  // namespace
+}  // namespace gdr
+
+namespace gdr {
+namespace {
+
+// Deferred timing still records every launch (at the end of reconstruct) and gives the same
+// image as waiting on each launch.
+TEST(ReconDeferredTiming, RecordsKernelsAndMatchesBlockingRuns) {
+  test::GradientImage g = test::exact_problem(33, 21);
+  test::add_gaussian_noise(g.primal, 0.2f, 7);  // seed 7
+  Stats stats;
+  Context ctx(test::default_context().device(), &stats);
+  ReconSettings s;  // L1, fast: many launches
+  ReconResult deferred = reconstruct(ctx, g.w, g.h, g.primal, g.dx, g.dy, s, nullptr);
+  EXPECT_FALSE(ctx.deferred_timing());
+  EXPECT_EQ(stats.count("kernel_items/recon_pack"), size_t(g.w) * g.h);
+  EXPECT_GT(stats.count("kernel_items/recon_apply_dot"), 0u);
+  // 20 CG iterations with every launch waited on, then with deferred timing: same image.
+  std::vector<float> images[2];
+  for (int d = 0; d < 2; ++d) {
+    ReconSystem problem(ctx, g.w, g.h, g.primal, g.dx, g.dy);
+    problem.set_l2_weights(s.alpha);
+    problem.build_rhs();
+    CgSolver cg(ctx, g.w, g.h);
+    std::unique_ptr<DeferredTiming> scope;
+    if (d == 1) scope = std::make_unique<DeferredTiming>(ctx);
+    cg.solve(problem.system(), 20, 0.0);
+    images[d] = problem.result(nullptr);
+  }
+  EXPECT_EQ(images[0], images[1]);
+  EXPECT_TRUE(test::all_finite(deferred.rgb));
 }
 
 }  // namespace
