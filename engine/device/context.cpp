@@ -26,12 +26,44 @@ Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stat
 }
 
 Context::~Context() {
+  try {
+    finish();
+  } catch (...) {  // a failed kernel: nothing left to report it to
+  }
+  kept_.clear();
   programs_.clear();
   if (queue_) clReleaseCommandQueue(queue_);
   if (context_) clReleaseContext(context_);
 }
 
-void Context::finish() const { cl_check(clFinish(queue_), "clFinish"); }
+void Context::finish() const {
+  cl_int err = clFinish(queue_);
+  collect_timings();
+  cl_check(err, "clFinish");
+}
+
+void Context::collect_timings() const {
+  std::vector<Pending> pending;
+  pending.swap(pending_);
+  cl_int first_error = CL_SUCCESS;
+  std::string failed;
+  for (const Pending& p : pending) {
+    cl_int err = clWaitForEvents(1, &p.event);
+    if (err == CL_SUCCESS && stats_) {
+      cl_ulong start = 0, end = 0;
+      clGetEventProfilingInfo(p.event, CL_PROFILING_COMMAND_START, sizeof(start), &start, nullptr);
+      clGetEventProfilingInfo(p.event, CL_PROFILING_COMMAND_END, sizeof(end), &end, nullptr);
+      stats_->add_time("kernel/" + p.name, end > start ? (end - start) * 1e-9 : 0.0);
+      stats_->add_count("kernel_items/" + p.name, p.items);
+    }
+    if (err != CL_SUCCESS && first_error == CL_SUCCESS) {
+      first_error = err;
+      failed = p.name;
+    }
+    clReleaseEvent(p.event);
+  }
+  if (first_error != CL_SUCCESS) cl_check(first_error, ("running kernel " + failed).c_str());
+}
 
 std::string program_build_options(const Defines& defines) {
   std::string options = "-cl-std=CL1.2";
@@ -132,6 +164,16 @@ void Kernel::launch(cl_uint dims, const size_t* global, const size_t* local, siz
   if (context_->stats() && !context_->stats()->has("startup/first_kernel_launch_seconds")) {
     // From process start to here: runtime set-up, scene load, BVH and kernel builds.
     context_->stats()->set("startup/first_kernel_launch_seconds", seconds_since_process_start());
+  }
+  if (context_->deferred_) {
+    // Without stats no event is needed at all.
+    cl_event event = nullptr;
+    cl_event* want = context_->stats() ? &event : nullptr;
+    cl_check(clEnqueueNDRangeKernel(context_->queue(), kernel_, dims, nullptr, global, local, 0, nullptr, want),
+             ("launching kernel " + name_).c_str());
+    if (event) context_->pending_.push_back(Context::Pending{event, name_, items});
+    if (context_->pending_.size() >= 1024) context_->collect_timings();
+    return;
   }
   cl_event event = nullptr;
   cl_check(clEnqueueNDRangeKernel(context_->queue(), kernel_, dims, nullptr, global, local, 0, nullptr, &event),

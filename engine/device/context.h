@@ -36,7 +36,20 @@ class Context {
   // Throws DeviceError with the compiler log (file:line of the kernel source) on failure.
   std::shared_ptr<Program> program(const std::string& root, const Defines& defines = {});
 
+  // Waits for every queued command; with deferred timing also records the kernels' times.
   void finish() const;
+
+  // Deferred timing: Kernel::run returns once the launch is queued instead of waiting for its
+  // end; device times are read at the next finish() (or after many launches). The in-order queue
+  // keeps results the same, and blocking reads still wait for the kernels before them. A kernel
+  // failure then shows at finish(). Off by default; DeferredTiming turns it on for a scope.
+  void set_deferred_timing(bool on) { deferred_ = on; }
+  bool deferred_timing() const { return deferred_; }
+
+  // A slot for an object that a subsystem keeps with this context between calls (device buffers
+  // it reuses, so that repeated calls do not allocate and first-touch fresh memory each time).
+  // Empty until the caller fills it; released before the context.
+  std::shared_ptr<void>& kept(const std::string& key) { return kept_[key]; }
 
  private:
   DeviceInfo device_;
@@ -44,6 +57,37 @@ class Context {
   cl_context context_ = nullptr;
   cl_command_queue queue_ = nullptr;
   std::map<std::string, std::shared_ptr<Program>> programs_;
+  std::map<std::string, std::shared_ptr<void>> kept_;
+  friend class Kernel;
+  struct Pending {
+    cl_event event;
+    std::string name;
+    size_t items;
+  };
+  void collect_timings() const;
+  bool deferred_ = false;
+  mutable std::vector<Pending> pending_;
+};
+
+// Deferred timing for the life of this object; at its end the queue is finished.
+class DeferredTiming {
+ public:
+  explicit DeferredTiming(Context& ctx) : ctx_(ctx), was_(ctx.deferred_timing()) {
+    ctx.set_deferred_timing(true);
+  }
+  ~DeferredTiming() {
+    ctx_.set_deferred_timing(was_);
+    try {
+      ctx_.finish();
+    } catch (...) {  // reported by the next call that waits on the queue
+    }
+  }
+  DeferredTiming(const DeferredTiming&) = delete;
+  DeferredTiming& operator=(const DeferredTiming&) = delete;
+
+ private:
+  Context& ctx_;
+  bool was_;
 };
 
 class Kernel;

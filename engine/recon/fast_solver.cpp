@@ -31,6 +31,8 @@ SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, doub
   out.residual = relative_residual(rr0, bb, rr0);
   if (relative_residual(rr0, ref, rr0) <= tolerance || max_iterations <= 0) return out;
 
+  if (!mg_ready_) mg_.setup(sys);
+  mg_ready_ = true;
   int rz_old = DeviceDots::kRZ0, rz_new = DeviceDots::kRZ1;
   Vec4Buffer* z = &mg_.apply(r_);
   dots_.dot(r_, *z, n, rz_old);

@@ -9,7 +9,8 @@ class FastSolver {
  public:
   FastSolver(Context& ctx, int width, int height);
   // Like CgSolver::solve; call setup() after the weights of `sys` change.
-  void setup(const LinearSystem& sys) { mg_.setup(sys); }
+  // (The multigrid levels are built at the first iteration that needs them.)
+  void setup(const LinearSystem&) { mg_ready_ = false; }
   SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
                      bool relative_to_start = false);
   DeviceDots& dots() { return dots_; }
@@ -17,6 +18,7 @@ class FastSolver {
  private:
   DeviceDots dots_;
   Multigrid mg_;
+  bool mg_ready_ = false;
   Vec4Buffer r_, p_, q_;
   Kernel apply_dot_, residual_, update_xr_dot_, update_p_;
 };

@@ -7,6 +7,11 @@ namespace gdr {
 
 ReconSystem::ReconSystem(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
                          const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb)
+    : ReconSystem(ctx, width, height) {
+  load(primal_rgb, dx_rgb, dy_rgb);
+}
+
+ReconSystem::ReconSystem(Context& ctx, int width, int height)
     : ctx_(ctx),
       width_(width),
       height_(height),
@@ -21,21 +26,30 @@ ReconSystem::ReconSystem(Context& ctx, int width, int height, const std::vector<
       wy_(ctx, size_t(width) * height),
       b_(ctx, size_t(width) * height),
       x_(ctx, size_t(width) * height),
+      primal_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
+      dx_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
+      dy_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
+      rgb_out_(ctx, size_t(width) * height * 3),
+      count_(ctx, 1),
+      pack_(recon_program(ctx, "recon/setup.cl")->kernel("recon_pack")),
       weights_l2_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_l2")),
       weights_l1_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_l1")),
       rhs_(recon_program(ctx, "recon/setup.cl")->kernel("recon_rhs")),
       energy_(recon_program(ctx, "recon/setup.cl")->kernel("recon_energy")),
-      unpack_(recon_program(ctx, "recon/setup.cl")->kernel("recon_unpack")) {
-  Buffer<float> primal(ctx, primal_rgb, CL_MEM_READ_ONLY);
-  Buffer<float> dx(ctx, dx_rgb, CL_MEM_READ_ONLY);
-  Buffer<float> dy(ctx, dy_rgb, CL_MEM_READ_ONLY);
-  Buffer<cl_uint> count(ctx, std::vector<cl_uint>{0});
-  Kernel pack = recon_program(ctx, "recon/setup.cl")->kernel("recon_pack");
-  pack.args(primal, dx, dy, width, height, P_, Gx_, Gy_, mp_, mx_, my_, count).run(size_t(width) * height);
-  nonfinite_inputs_ = count.read()[0];
+      unpack_(recon_program(ctx, "recon/setup.cl")->kernel("recon_unpack")) {}
+
+void ReconSystem::load(const std::vector<float>& primal_rgb, const std::vector<float>& dx_rgb,
+                       const std::vector<float>& dy_rgb) {
+  primal_in_.write(primal_rgb);
+  dx_in_.write(dx_rgb);
+  dy_in_.write(dy_rgb);
+  count_.fill(0);
+  pack_.args(primal_in_, dx_in_, dy_in_, width_, height_, P_, Gx_, Gy_, mp_, mx_, my_, count_)
+      .run(size_t(width_) * height_);
+  nonfinite_inputs_ = count_.read()[0];
   // The primal (0 where missing) is the starting estimate.
-  cl_check(clEnqueueCopyBuffer(ctx.queue(), P_.handle(), x_.handle(), 0, 0,
-                               sizeof(cl_float4) * size_t(width) * height, 0, nullptr, nullptr),
+  cl_check(clEnqueueCopyBuffer(ctx_.queue(), P_.handle(), x_.handle(), 0, 0,
+                               sizeof(cl_float4) * size_t(width_) * height_, 0, nullptr, nullptr),
            "clEnqueueCopyBuffer");
 }
 
@@ -76,11 +90,10 @@ double ReconSystem::primal_rms(DeviceDots& dots) {
 
 std::vector<float> ReconSystem::result(unsigned* nonfinite_outputs) {
   size_t n = size_t(width_) * height_;
-  Buffer<float> rgb(ctx_, n * 3);
-  Buffer<cl_uint> count(ctx_, std::vector<cl_uint>{0});
-  unpack_.args(x_, P_, int(n), rgb, count).run(n);
-  if (nonfinite_outputs) *nonfinite_outputs = count.read()[0];
-  return rgb.read();
+  count_.fill(0);
+  unpack_.args(x_, P_, int(n), rgb_out_, count_).run(n);
+  if (nonfinite_outputs) *nonfinite_outputs = count_.read()[0];
+  return rgb_out_.read();
 }
 
 }  // namespace gdr

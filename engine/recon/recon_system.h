@@ -29,6 +29,11 @@ class ReconSystem {
   // Uploads and packs the inputs (sizes already checked); x starts at the primal.
   ReconSystem(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
               const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb);
+  // Buffers only; load() before use.
+  ReconSystem(Context& ctx, int width, int height);
+  // Replaces the inputs (the same size) and restarts x at the primal.
+  void load(const std::vector<float>& primal_rgb, const std::vector<float>& dx_rgb,
+            const std::vector<float>& dy_rgb);
 
   unsigned nonfinite_inputs() const { return nonfinite_inputs_; }
   void set_l2_weights(float alpha);
@@ -52,7 +57,9 @@ class ReconSystem {
   int width_, height_;
   unsigned nonfinite_inputs_ = 0;
   Vec4Buffer P_, Gx_, Gy_, mp_, mx_, my_, wp_, wx_, wy_, b_, x_;
-  Kernel weights_l2_, weights_l1_, rhs_, energy_, unpack_;
+  Buffer<float> primal_in_, dx_in_, dy_in_, rgb_out_;
+  Buffer<cl_uint> count_;
+  Kernel pack_, weights_l2_, weights_l1_, rhs_, energy_, unpack_;
 };
 
 }  // namespace gdr

@@ -1,6 +1,7 @@
 // Test images for the reconstruction tests: a known image (smooth ramps plus hard edges), its
 // exact forward-difference gradients, seeded noise, and error measures.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -80,6 +81,47 @@ inline bool all_finite(const std::vector<float>& v) {
     if (!std::isfinite(x)) return false;
   }
   return true;
+}
+
+// Dense normal equations built here from the definition of the objective, solved by Gaussian
+// elimination with partial pivoting (double precision), per channel.
+inline std::vector<float> dense_l2_solve(int w, int h, float alpha, const std::vector<float>& primal,
+                                  const std::vector<float>& dx, const std::vector<float>& dy) {
+  int n = w * h;
+  std::vector<float> out(size_t(n) * 3);
+  for (int c = 0; c < 3; ++c) {
+    std::vector<std::vector<double>> A(n, std::vector<double>(n + 1, 0.0));
+    auto add_term = [&](int i, int j, double g) {  // (x_j - x_i - g)^2
+      A[i][i] += 1; A[j][j] += 1; A[i][j] -= 1; A[j][i] -= 1;
+      A[i][n] -= g; A[j][n] += g;
+    };
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        int i = y * w + x;
+        A[i][i] += double(alpha) * alpha;  // (alpha (x_i - p_i))^2
+        A[i][n] += double(alpha) * alpha * primal[i * 3 + c];
+        if (x + 1 < w) add_term(i, i + 1, dx[i * 3 + c]);
+        if (y + 1 < h) add_term(i, i + w, dy[i * 3 + c]);
+      }
+    }
+    for (int k = 0; k < n; ++k) {
+      int piv = k;
+      for (int i = k + 1; i < n; ++i) if (std::fabs(A[i][k]) > std::fabs(A[piv][k])) piv = i;
+      std::swap(A[k], A[piv]);
+      for (int i = k + 1; i < n; ++i) {
+        double f = A[i][k] / A[k][k];
+        for (int j = k; j <= n; ++j) A[i][j] -= f * A[k][j];
+      }
+    }
+    std::vector<double> x(n);
+    for (int k = n - 1; k >= 0; --k) {
+      double s = A[k][n];
+      for (int j = k + 1; j < n; ++j) s -= A[k][j] * x[j];
+      x[k] = s / A[k][k];
+    }
+    for (int i = 0; i < n; ++i) out[i * 3 + c] = float(x[i]);
+  }
+  return out;
 }
 
 // Settings that solve to convergence (for comparisons with exact answers).

@@ -49,47 +49,6 @@ TEST_P(ReconExact, OddSizes) {
 INSTANTIATE_TEST_SUITE_P(Recon, ReconExact, ::testing::ValuesIn(test::all_cases()),
                          [](const auto& info) { return test::case_name(info.param); });
 
-// Dense normal equations built here from the definition of the objective, solved by Gaussian
-// elimination with partial pivoting (double precision), per channel.
-std::vector<float> dense_l2_solve(int w, int h, float alpha, const std::vector<float>& primal,
-                                  const std::vector<float>& dx, const std::vector<float>& dy) {
-  int n = w * h;
-  std::vector<float> out(size_t(n) * 3);
-  for (int c = 0; c < 3; ++c) {
-    std::vector<std::vector<double>> A(n, std::vector<double>(n + 1, 0.0));
-    auto add_term = [&](int i, int j, double g) {  // (x_j - x_i - g)^2
-      A[i][i] += 1; A[j][j] += 1; A[i][j] -= 1; A[j][i] -= 1;
-      A[i][n] -= g; A[j][n] += g;
-    };
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        int i = y * w + x;
-        A[i][i] += double(alpha) * alpha;  // (alpha (x_i - p_i))^2
-        A[i][n] += double(alpha) * alpha * primal[i * 3 + c];
-        if (x + 1 < w) add_term(i, i + 1, dx[i * 3 + c]);
-        if (y + 1 < h) add_term(i, i + w, dy[i * 3 + c]);
-      }
-    }
-    for (int k = 0; k < n; ++k) {
-      int piv = k;
-      for (int i = k + 1; i < n; ++i) if (std::fabs(A[i][k]) > std::fabs(A[piv][k])) piv = i;
-      std::swap(A[k], A[piv]);
-      for (int i = k + 1; i < n; ++i) {
-        double f = A[i][k] / A[k][k];
-        for (int j = k; j <= n; ++j) A[i][j] -= f * A[k][j];
-      }
-    }
-    std::vector<double> x(n);
-    for (int k = n - 1; k >= 0; --k) {
-      double s = A[k][n];
-      for (int j = k + 1; j < n; ++j) s -= A[k][j] * x[j];
-      x[k] = s / A[k][k];
-    }
-    for (int i = 0; i < n; ++i) out[i * 3 + c] = float(x[i]);
-  }
-  return out;
-}
-
 // Random (inconsistent) primal and gradients, so the answer is a genuine compromise.
 TEST(ReconDense, KernelL2MatchesDenseSolve) {
   for (auto [w, h] : std::vector<std::pair<int, int>>{{5, 4}, {1, 6}, {3, 1}}) {
@@ -99,7 +58,7 @@ TEST(ReconDense, KernelL2MatchesDenseSolve) {
     test::add_gaussian_noise(dx, 0.3f, 12);      // seed 12
     test::add_gaussian_noise(dy, 0.3f, 13);      // seed 13
     const float alpha = 0.2f;
-    std::vector<float> expected = dense_l2_solve(w, h, alpha, primal, dx, dy);
+    std::vector<float> expected = test::dense_l2_solve(w, h, alpha, primal, dx, dy);
     for (auto solver : {ReconSettings::Solver::CG, ReconSettings::Solver::Fast}) {
       ReconSettings s = test::converged(ReconNorm::L2, solver);
       s.alpha = alpha;
