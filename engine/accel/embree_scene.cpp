@@ -18,12 +18,6 @@ namespace {
 // rays for TBB (small enough to balance, large enough for Embree's stream traversal).
 constexpr size_t kChunk = 512;
 
-void embree_error(void*, RTCError code, const char* message) {
-  // Errors are also read back with rtcGetDeviceError where they matter; this keeps the text.
-  (void)code;
-  (void)message;
-}
-
 RTCBuildQuality to_rtc(BuildQuality q) {
   switch (q) {
     case BuildQuality::Low: return RTC_BUILD_QUALITY_LOW;
@@ -45,7 +39,6 @@ EmbreeScene::EmbreeScene(const Scene& scene, BuildQuality quality, Stats* stats)
   std::string config = "threads=" + std::to_string(runtime_threads());
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw Error("Embree: cannot create a device");
-  rtcSetDeviceErrorFunction(device_, embree_error, nullptr);
   scene_ = rtcNewScene(device_);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, to_rtc(quality));

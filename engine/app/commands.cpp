@@ -1,11 +1,8 @@
 #include "app/commands.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 
-#include "accel/embree_scene.h"
 #include "app/reconstruct_command.h"
 #include "app/render_command.h"
 #include "device/context.h"
@@ -15,7 +12,6 @@
 #include "scene/describe_scene.h"
 #include "scene/load_scene.h"
 #include "util/error.h"
-#include "util/log.h"
 
 namespace gdr {
 

@@ -1,7 +1,5 @@
 #include "app/render_command.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 
 #include "accel/embree_scene.h"

@@ -33,7 +33,9 @@ DeviceScene::DeviceScene(Context& ctx, const Scene& s, std::vector<float> env_ta
       light_cdf_(ctx, light_selection_cdf(s), CL_MEM_READ_ONLY),
       env_cdf_(ctx, env_tables, CL_MEM_READ_ONLY),
       camera_(ctx, std::vector<GdrCamera>{s.camera}, CL_MEM_READ_ONLY),
-      light_count_(static_cast<int>(s.lights.size())) {
+      light_count_(static_cast<int>(s.lights.size())),
+      width_(s.camera.width),
+      height_(s.camera.height) {
   for (size_t i = 0; i < s.lights.size(); ++i) {
     if (s.lights[i].type == LIGHT_CONSTANT || s.lights[i].type == LIGHT_ENVMAP) env_light_ = static_cast<int>(i);
   }
@@ -54,6 +56,32 @@ void DeviceScene::set_args(Kernel& k, cl_uint first) const {
   k.set_arg(first + 8, lights_);
   k.set_arg(first + 9, light_cdf_);
   k.set_arg(first + 10, env_cdf_);
+}
+
+
+GdrPtParams DeviceScene::path_params(const RenderSettings& settings, uint32_t sample, uint32_t first,
+                                     uint32_t count) const {
+  GdrPtParams p{};
+  p.seed = settings.seed;
+  p.first_pixel = first;
+  p.pixel_count = count;
+  p.sample = sample;
+  p.max_depth = settings.max_depth;
+  p.rr_depth = settings.rr_depth;
+  p.light_count = light_count_;
+  p.env_light = env_light_;
+  p.scene_radius = scene_radius_;
+  p.strategy = settings.strategy;
+  p.width = width_;
+  p.height = height_;
+  return p;
+}
+
+Defines scene_kernel_defines(const Scene& scene) {
+  Defines d = scene.features.kernel_defines();
+  d["GDR_BSDF_SELECTED"] = "1";
+  d["GDR_LIGHTS_SELECTED"] = "1";
+  return d;
 }
 
 }  // namespace gdr

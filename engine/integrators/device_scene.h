@@ -4,7 +4,9 @@
 #include <vector>
 
 #include "device/context.h"
+#include "integrators/render_settings.h"
 #include "scene/scene.h"
+#include "shared/pt_types.h"
 
 namespace gdr {
 
@@ -19,6 +21,9 @@ class DeviceScene {
   int env_light() const { return env_light_; }
   float scene_radius() const { return scene_radius_; }
   const Buffer<GdrCamera>& camera() const { return camera_; }
+
+  // The launch parameters every path-based kernel shares, for pixels [first, first + count).
+  GdrPtParams path_params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
 
  private:
   // env_tables is filled while lights_ is built (members initialise in declaration order).
@@ -39,6 +44,10 @@ class DeviceScene {
   int light_count_ = 0;
   int env_light_ = -1;
   float scene_radius_ = 1.0f;
+  int width_ = 0, height_ = 0;
 };
+
+// The -D defines of the kernels for a scene: only its BSDF and light types.
+Defines scene_kernel_defines(const Scene& scene);
 
 }  // namespace gdr

@@ -9,13 +9,6 @@
 namespace gdr {
 namespace {
 
-void set4(float* dst, Rgb c) {
-  dst[0] = c.r;
-  dst[1] = c.g;
-  dst[2] = c.b;
-  dst[3] = 0;
-}
-
 void set4(float* dst, Vec3d v) {
   dst[0] = static_cast<float>(v.x);
   dst[1] = static_cast<float>(v.y);

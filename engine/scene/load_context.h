@@ -36,6 +36,14 @@ int load_material(LoadContext& ctx, const XmlNode& bsdf);  // material index (ca
 int default_material(LoadContext& ctx);                    // Mitsuba's default: diffuse 0.5
 int load_texture(LoadContext& ctx, const XmlNode& texture);  // texture index, or -1 if unsupported
 int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear);
+// Fills a 4-float slot of the shared layouts (RGB or xyz, then 0).
+inline void set4(float* dst, Rgb c) {
+  dst[0] = c.r;
+  dst[1] = c.g;
+  dst[2] = c.b;
+  dst[3] = 0;
+}
+
 void load_shape(LoadContext& ctx, const XmlNode& shape);
 void load_emitter(LoadContext& ctx, const XmlNode& emitter);  // lights not attached to a shape
 void add_area_lights(LoadContext& ctx, const XmlNode& emitter, int shape_index);

@@ -10,13 +10,6 @@
 namespace gdr {
 namespace {
 
-void set4(float* dst, Rgb c) {
-  dst[0] = c.r;
-  dst[1] = c.g;
-  dst[2] = c.b;
-  dst[3] = 0;
-}
-
 GdrMaterial base_material(int type) {
   GdrMaterial m{};
   m.type = type;

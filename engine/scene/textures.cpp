@@ -25,13 +25,6 @@ void read_uv_transform(const Props& p, GdrTexture& t) {
   for (int i = 0; i < 6; ++i) t.uv_transform[i] = static_cast<float>(v[i]);
 }
 
-void set4(float* dst, Rgb c) {
-  dst[0] = c.r;
-  dst[1] = c.g;
-  dst[2] = c.b;
-  dst[3] = 0;
-}
-
 }  // namespace
 
 int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear) {

@@ -23,7 +23,7 @@
 
 inline SceneData gpt_scene(const GdrGptParams* p, SCENE_DATA_ARGS) {
   return scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights, light_cdf, env_cdf,
-                         p->light_count, p->env_light, p->scene_radius);
+                         p->path.light_count, p->path.env_light, p->path.scene_radius);
 }
 
 // Accumulators are indexed by pixel over the whole image, so gpt_gather can read neighbours.
@@ -55,11 +55,11 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
                            __global GdrRayHit* offset_rays, __global GptBaseState* bases,
                            __global GptOffsetState* offsets, __global float4* acc, __global uint* counters) {
   uint g = get_global_id(0);
-  if (g >= params.group_count) return;
+  if (g >= params.path.pixel_count) return;
   GdrCamera cam = *camera;
-  uint pixel = params.first_pixel + g;
-  int px = (int)(pixel % (uint)params.width), py = (int)(pixel / (uint)params.width);
-  float4 u = rng_block(params.seed, pixel, params.sample, RNG_BLOCK_CAMERA);
+  uint pixel = params.path.first_pixel + g;
+  int px = (int)(pixel % (uint)params.path.width), py = (int)(pixel / (uint)params.path.width);
+  float4 u = rng_block(params.path.seed, pixel, params.path.sample, RNG_BLOCK_CAMERA);
   float2 jitter = sample_filter(cam.filter, cam.filter_radius, u.xy);
   float3 o, d;
   float tnear, tfar;
@@ -69,7 +69,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   b.throughput[0] = b.throughput[1] = b.throughput[2] = 1.0f;
   b.bsdf_pdf = 0.0f;
   b.pixel = pixel;
-  b.sample = params.sample;
+  b.sample = params.path.sample;
   b.depth = 0;
   b.flags = PATH_FLAG_SPECULAR;
   b.rr_prob = 1.0f;
@@ -84,7 +84,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     os.last_delta = 0;
     os.visible = 0;
     int nx = px + OFFSET_PIXEL_DX(k), ny = py + OFFSET_PIXEL_DY(k);
-    if (nx < 0 || ny < 0 || nx >= params.width || ny >= params.height) {
+    if (nx < 0 || ny < 0 || nx >= params.path.width || ny >= params.path.height) {
       kill_offset(&os, counters, GPT_COUNTER_FAIL_OUTSIDE);
     } else {
       // The pixel shift: the same filter sample, one pixel over (Jacobian 1).
@@ -231,7 +231,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   }
 #endif
 
-  if (params.max_depth > 0 && base.depth + 2 > params.max_depth) {
+  if (params.path.max_depth > 0 && base.depth + 2 > params.path.max_depth) {
     for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
     return;
   }
@@ -242,7 +242,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
 
   // Next-event estimation: the base samples a light point; offsets reconnect to the same point.
   if (s.light_count > 0 && !bsdf_is_delta(&b)) {
-    float4 ul = rng_block(params.seed, base.pixel, base.sample, RNG_BLOCK_LIGHT(base.depth));
+    float4 ul = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_LIGHT(base.depth));
     int light = light_select(&s, ul.x);
     LightSample ls;
     if (light_sample(&s, light, su.p, ul.yz, &ls)) {
@@ -306,7 +306,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   }
 
   // The base's BSDF sample; Russian roulette is decided by the base.
-  float4 ub = rng_block(params.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth));
+  float4 ub = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth));
   BsdfSample bs;
   int alive = bsdf_sample(&b, wo_l, ub.xyz, &bs);
   float3 wi = frame_to_world(&frame, bs.wi);
@@ -316,7 +316,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     alive = is_finite3(beta) && max3(beta) > 0.0f;
   }
   float rr = 1.0f;
-  if (alive && base.depth + 1 >= params.rr_depth) {
+  if (alive && base.depth + 1 >= params.path.rr_depth) {
     rr = fmin(max3(beta), 0.95f);
     alive = ub.w < rr;
   }
@@ -418,7 +418,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
   float3 wi_l = frame_to_local(&fx, wi_w);
   float p_base = base.bsdf_pdf;
   int next_hit = rh.hit.geomID != GDR_INVALID_ID;
-  float4 ub = rng_block(params.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth - 1));
+  float4 ub = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth - 1));
   float thr = params.shift_threshold;
 
   for (int k = 0; k < GPT_OFFSETS; ++k) {

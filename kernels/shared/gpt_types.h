@@ -2,6 +2,7 @@
 // Each pixel sample is a group: one base path and four offset paths through the neighbouring
 // pixels (+x, -x, +y, -y), traced in the same wavefront.
 #pragma once
+#include "shared/pt_types.h"
 
 #define GPT_OFFSETS 4
 #define GPT_DIR_PX 0
@@ -54,20 +55,10 @@ typedef struct GptBaseState {
 } GptBaseState;
 
 typedef struct GdrGptParams {
-  unsigned int seed;
-  unsigned int first_pixel;  // group g traces pixel first_pixel + g
-  unsigned int group_count;
-  unsigned int sample;
-  int max_depth;
-  int rr_depth;
-  int light_count;
-  int env_light;
-  float scene_radius;
+  GdrPtParams path;       // pixel_count counts groups; strategy is always MIS
   int shift;              // GPT_SHIFT_*
   float shift_threshold;  // roughness at or below which a vertex is glossy (not reconnectable)
-  int width;
-  int height;
-  int pad0, pad1, pad2;
+  int pad0, pad1;
 } GdrGptParams;
 
 // Accumulators per group (float4 each): contributions of the base to the pair with neighbour k,

@@ -12,11 +12,11 @@ typedef struct GdrPathState {
   int flags;           // PATH_FLAG_*
 } GdrPathState;
 
-// Per-launch parameters of the path tracer kernels.
+// Per-launch parameters of the path-based kernels (pt, and gpt inside GdrGptParams).
 typedef struct GdrPtParams {
   unsigned int seed;
-  unsigned int first_pixel;  // the queue's slot i traces pixel first_pixel + i
-  unsigned int pixel_count;  // slots in this pass
+  unsigned int first_pixel;  // the queue's slot (gpt: group) i traces pixel first_pixel + i
+  unsigned int pixel_count;  // slots in this chunk
   unsigned int sample;       // sample index of the pass
   int max_depth;             // longest path in segments (camera vertex excluded); <=0: unbounded
   int rr_depth;              // bounces before Russian roulette starts
@@ -24,7 +24,8 @@ typedef struct GdrPtParams {
   int env_light;             // index of the environment light, or -1
   float scene_radius;
   int strategy;              // PT_STRATEGY_*
-  int pad0, pad1;
+  int width;                 // film size
+  int height;
 } GdrPtParams;
 
 #define PT_STRATEGY_MIS 0    // BSDF and light sampling combined by the power heuristic

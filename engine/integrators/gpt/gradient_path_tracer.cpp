@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "integrators/progressive_loop.h"
-#include "integrators/pt/path_tracer.h"
 
 namespace gdr {
 namespace {
@@ -17,6 +16,10 @@ const char* kShiftCounterNames[GPT_COUNTER_COUNT] = {
     "shifts/reconnection", "shifts/half_vector", "shifts/delta_lobe", "shifts/direction_copy", "shifts/replay",
     "shift_failures/outside_image", "shift_failures/lobe_mismatch", "shift_failures/refraction",
     "shift_failures/occluded", "shift_failures/environment_mismatch", "shift_failures/zero_pdf_or_value"};
+
+Kernel gpt_kernel(Context& ctx, const Scene& scene, const char* name) {
+  return ctx.program("gpt/gpt.cl", scene_kernel_defines(scene))->kernel(name);
+}
 
 std::vector<float> to_rgb(const std::vector<Vec4>& v, float scale) {
   std::vector<float> rgb(v.size() * 3);
@@ -36,12 +39,12 @@ GradientPathTracer::GradientPathTracer(Context& ctx, const Scene& scene, EmbreeS
       embree_(embree),
       gpt_(gpt),
       device_scene_(ctx, scene),
-      generate_(ctx.program("gpt/gpt.cl", pt_kernel_defines(scene))->kernel("gpt_generate")),
-      scatter_(ctx.program("gpt/gpt.cl", pt_kernel_defines(scene))->kernel("gpt_scatter")),
-      shade_(ctx.program("gpt/gpt.cl", pt_kernel_defines(scene))->kernel("gpt_shade")),
-      shadow_(ctx.program("gpt/gpt.cl", pt_kernel_defines(scene))->kernel("gpt_shadow")),
-      shift_(ctx.program("gpt/gpt.cl", pt_kernel_defines(scene))->kernel("gpt_shift")),
-      gather_(ctx.program("gpt/gpt.cl", pt_kernel_defines(scene))->kernel("gpt_gather")),
+      generate_(gpt_kernel(ctx, scene, "gpt_generate")),
+      scatter_(gpt_kernel(ctx, scene, "gpt_scatter")),
+      shade_(gpt_kernel(ctx, scene, "gpt_shade")),
+      shadow_(gpt_kernel(ctx, scene, "gpt_shadow")),
+      shift_(gpt_kernel(ctx, scene, "gpt_shift")),
+      gather_(gpt_kernel(ctx, scene, "gpt_gather")),
       capacity_(std::min(kMaxGroupsInFlight, size_t(scene.camera.width) * scene.camera.height)),
       base_rays_{Buffer<GdrRayHit>(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
                  Buffer<GdrRayHit>(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR)},
@@ -62,19 +65,10 @@ GradientPathTracer::GradientPathTracer(Context& ctx, const Scene& scene, EmbreeS
 GdrGptParams GradientPathTracer::params(const RenderSettings& settings, uint32_t sample, uint32_t first,
                                         uint32_t count) const {
   GdrGptParams p{};
-  p.seed = settings.seed;
-  p.first_pixel = first;
-  p.group_count = count;
-  p.sample = sample;
-  p.max_depth = settings.max_depth;
-  p.rr_depth = settings.rr_depth;
-  p.light_count = device_scene_.light_count();
-  p.env_light = device_scene_.env_light();
-  p.scene_radius = device_scene_.scene_radius();
+  p.path = device_scene_.path_params(settings, sample, first, count);
+  p.path.strategy = PT_STRATEGY_MIS;
   p.shift = gpt_.shift;
   p.shift_threshold = gpt_.shift_threshold;
-  p.width = scene_.camera.width;
-  p.height = scene_.camera.height;
   return p;
 }
 

@@ -13,17 +13,10 @@ namespace {
 constexpr size_t kMaxPathsInFlight = size_t(1) << 19;
 
 Kernel make_kernel(Context& ctx, const Scene& scene, const char* name) {
-  return ctx.program("pt/pt.cl", pt_kernel_defines(scene))->kernel(name);
+  return ctx.program("pt/pt.cl", scene_kernel_defines(scene))->kernel(name);
 }
 
 }  // namespace
-
-Defines pt_kernel_defines(const Scene& scene) {
-  Defines d = scene.features.kernel_defines();
-  d["GDR_BSDF_SELECTED"] = "1";
-  d["GDR_LIGHTS_SELECTED"] = "1";
-  return d;
-}
 
 PathTracer::PathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree)
     : ctx_(ctx),
@@ -49,17 +42,7 @@ PathTracer::PathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree)
 
 void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
   Stats* stats = ctx_.stats();
-  GdrPtParams params{};
-  params.seed = settings.seed;
-  params.first_pixel = first;
-  params.pixel_count = count;
-  params.sample = sample;
-  params.max_depth = settings.max_depth;
-  params.rr_depth = settings.rr_depth;
-  params.light_count = device_scene_.light_count();
-  params.env_light = device_scene_.env_light();
-  params.scene_radius = device_scene_.scene_radius();
-  params.strategy = settings.strategy;
+  GdrPtParams params = device_scene_.path_params(settings, sample, first, count);
 
   generate_.args(device_scene_.camera(), params, rays_[0], queue_[0], paths_).run(count);
   cl_uint active = count;

@@ -42,7 +42,4 @@ class PathTracer {
   Buffer<float> aux_depth_;
 };
 
-// The -D defines of the path-tracing kernels for a scene: only its BSDF and light types.
-Defines pt_kernel_defines(const Scene& scene);
-
 }  // namespace gdr
