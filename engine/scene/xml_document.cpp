@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "util/error.h"
@@ -154,6 +155,7 @@ class Builder {
         out += value[i++];
         continue;
       }
+      used_.insert(key);
       auto it = params_.find(key);
       if (it == params_.end()) {
         throw InputError(file.path, line, "undefined parameter $" + key + " (no <default> and no -D " + key + "=...)");
@@ -174,6 +176,7 @@ class Builder {
       if (!xml.attribute("value")) throw InputError(file.path, line, "<default name=\"" + name + "\"> without a value");
       std::string value = substitute(xml.attribute("value").value(), file, line);
       params_.emplace(name, value);  // the first definition (or the caller's) wins
+      declared_.insert(name);
       return;
     }
     auto node = std::make_unique<XmlNode>();
@@ -215,6 +218,10 @@ class Builder {
 
   XmlDocument& doc_;
   std::map<std::string, std::string> params_;
+
+ public:
+  std::set<std::string> used_;      // $names the document refers to
+  std::set<std::string> declared_;  // <default> names
   std::vector<std::string> stack_;
   std::vector<std::unique_ptr<SourceFile>> files_;
 };
@@ -232,6 +239,10 @@ XmlDocument load_xml_document(const std::string& path,
   doc.search_paths.push_back(folder.empty() ? std::string(".") : folder.string());
   Builder builder(doc, defines);
   builder.load(path, *doc.root, nullptr, true);
+  for (const auto& [name, value] : defines) {
+    if (!builder.used_.count(name) && !builder.declared_.count(name)) doc.unused_defines.push_back(name);
+  }
+  doc.parameters.assign(builder.declared_.begin(), builder.declared_.end());
   return doc;
 }
 

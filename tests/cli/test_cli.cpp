@@ -104,6 +104,20 @@ TEST(Cli, ResolutionDefineSetsTheImageSize) {
   EXPECT_EQ(count_files(dir, ".png"), 1);
 }
 
+// A parameter the scene does not have is not silently ignored: a warning names it and the
+// scene's parameters; with --strict it is an error.
+TEST(Cli, UnknownDefineIsReported) {
+  TempDir dir;
+  const std::string plates = "'" + source_scene("glossy-plates.xml") + "'";
+  CliResult r = run_gdrender(plates + " -D res=8 -D width=8 -D height=8 --spp 1 --quiet -o out.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("no parameter $res"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("width"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("$width"), std::string::npos) << "a used parameter was reported: " << r.output;
+  TempDir strict;
+  expect_failure(run_gdrender(plates + " -D res=8 --strict --spp 1 -o out.exr", strict), "no parameter $res", strict);
+}
+
 TEST(Cli, InfoOfAGoodScene) {
   TempDir dir;
   CliResult r = run_gdrender("--info " + kCornell, dir);
