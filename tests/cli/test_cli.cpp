@@ -88,6 +88,14 @@ TEST(Cli, NanVertexInMeshIsRejected) {
   expect_failure(r, "nan.obj", dir);
 }
 
+// A transform that takes vertices beyond float range would leave infinite positions in the scene.
+TEST(Cli, HugeTransformIsRejected) {
+  TempDir dir;
+  dir.write("huge.xml", "<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n"
+                        "    <float name=\"radius\" value=\"1e200\"/>\n  </shape>\n</scene>\n");
+  expect_failure(run_gdrender("huge.xml -o out.exr --spp 1", dir), "huge.xml:2", dir);
+}
+
 TEST(Cli, MalformedDefineIsRejected) {
   TempDir dir;
   expect_failure(run_gdrender(kCornell + " -D res -o out.exr", dir), "-D", dir);
