@@ -39,17 +39,27 @@ const XmlNode& XmlDocument::lookup(const std::string& id, const XmlNode& from) c
   return *it->second;
 }
 
+namespace {
+
+// exists() without the exception: a name the OS rejects (too long, say) is a missing file.
+bool file_exists(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
+}  // namespace
+
 std::string XmlDocument::resolve(const std::string& filename, const XmlNode& from) const {
   fs::path p(filename);
   if (p.is_absolute()) {
-    if (fs::exists(p)) return p.string();
+    if (file_exists(p)) return p.string();
   } else {
     for (const std::string& dir : search_paths) {
       fs::path candidate = fs::path(dir) / p;
-      if (fs::exists(candidate)) return candidate.lexically_normal().string();
+      if (file_exists(candidate)) return candidate.lexically_normal().string();
     }
     fs::path beside = fs::path(from.file).parent_path() / p;
-    if (fs::exists(beside)) return beside.lexically_normal().string();
+    if (file_exists(beside)) return beside.lexically_normal().string();
   }
   std::string searched;
   for (const std::string& dir : search_paths) searched += (searched.empty() ? "" : ", ") + dir;
