@@ -11,6 +11,7 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools
   libpugixml-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
   libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev python3-venv
 )
 
 missing=()

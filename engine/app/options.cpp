@@ -2,9 +2,24 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
 
 namespace gdr {
+namespace {
+
+// CLI11's PositiveNumber lets "nan" and "inf" through (nan <= 0 is false): a --time of nan or
+// inf would render for ever.
+const CLI::Validator kFinitePositive(
+    [](std::string& s) -> std::string {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(s, v)) return "Value " + s + " is not a number";
+      if (!std::isfinite(v) || v <= 0) return "Value " + s + " is not a finite positive number";
+      return {};
+    },
+    "POSITIVE");
+
+}  // namespace
 
 std::optional<int> parse_options(int argc, char** argv, Options& o) {
   CLI::App app{"gdrender: gradient-domain Monte Carlo renderer (Embree + OpenCL)", "gdrender"};
@@ -23,7 +38,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("-o,--output", o.output, "Output image (.exr; a tone-mapped .png is written beside it)");
   app.add_option("--integrator", o.integrator, "pt | gpt (default: the scene's integrator, else pt)");
   app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::PositiveNumber);
-  app.add_option("--time", o.time_budget, "Render for this many seconds")->check(CLI::PositiveNumber);
+  app.add_option("--time", o.time_budget, "Render for this many seconds")->check(kFinitePositive);
   app.add_option("--seed", o.seed, "Random seed");
   std::vector<std::string> defines;
   app.add_option("-D", defines, "Scene parameter: -D name=value (overrides <default name=...>)");
@@ -48,7 +63,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--recon", o.recon, "Poisson reconstruction: l1 | l2 | none")
       ->check(CLI::IsMember({"l1", "l2", "none"}));
   app.add_option("--alpha", o.alpha, "Weight of the primal in the screened Poisson solve")
-      ->check(CLI::PositiveNumber);
+      ->check(kFinitePositive);
   auto* verbose = app.add_flag("-v,--verbose", o.verbose, "More log output");
   app.add_flag("-q,--quiet", o.quiet, "Only warnings and errors")->excludes(verbose);
 

@@ -51,6 +51,16 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
   Scene scene;
   scene.path = path;
   LoadContext ctx(doc, options, scene);
+  for (const std::string& name : doc.unused_defines) {
+    // A parameter the scene does not have (say -D res=... on a scene with width and height) would
+    // otherwise be ignored without a word.
+    std::string has;
+    for (const std::string& p : doc.parameters) has += (has.empty() ? "" : ", ") + p;
+    std::string problem = "-D " + name + "=...: the scene has no parameter $" + name + " (its parameters: " +
+                          (has.empty() ? std::string("none") : has) + ")";
+    if (options.strict) throw InputError(path, 0, problem);
+    ctx.warn(path + ": " + problem + "; ignored");
+  }
 
   std::vector<const XmlNode*> emitters;
   for (const auto& child : doc.root->children) {

@@ -79,7 +79,8 @@ MeshData read_serialized(const std::string& path, int shape_index) {
   if (size < 4 + entry * count) throw InputError(path, 0, "truncated mesh offset table");
   size_t at = size - 4 - entry * (count - static_cast<size_t>(shape_index));
   uint64_t offset = version == 4 ? load_le<uint64_t>(data + at) : load_le<uint32_t>(data + at);
-  if (offset + 4 > size || load_le<uint16_t>(data + offset) != kMagic) {
+  // offset + 4 could wrap around for offsets near 2^64; size >= 8 here.
+  if (offset > size - 4 || load_le<uint16_t>(data + offset) != kMagic) {
     throw InputError(path, 0, "bad offset for mesh " + std::to_string(shape_index));
   }
   std::vector<unsigned char> raw = inflate_stream(data + offset + 4, size - offset - 4, path);

@@ -1,5 +1,6 @@
 // Shapes: mesh files and analytic shapes become triangles in world space, with their material,
 // attached area emitter and flags.
+#include <cfloat>
 #include <cmath>
 
 #include "scene/load_context.h"
@@ -81,6 +82,11 @@ void load_shape(LoadContext& ctx, const XmlNode& node) {
   Mat4d inv = to_world.inverse();
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     Vec3d q = to_world.point({mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]});
+    // Checked in double: converting a value beyond float's range to float is undefined.
+    if (!(std::fabs(q.x) <= FLT_MAX && std::fabs(q.y) <= FLT_MAX && std::fabs(q.z) <= FLT_MAX)) {
+      throw InputError(node.file, node.line, "shape vertex " + std::to_string(v) +
+                                                 " is not finite or beyond float range after to_world");
+    }
     s.positions.push_back({static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z), 0});
     Vec4 n{};
     if (has_normals) {

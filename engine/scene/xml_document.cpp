@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "util/error.h"
@@ -38,17 +39,27 @@ const XmlNode& XmlDocument::lookup(const std::string& id, const XmlNode& from) c
   return *it->second;
 }
 
+namespace {
+
+// exists() without the exception: a name the OS rejects (too long, say) is a missing file.
+bool file_exists(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
+}  // namespace
+
 std::string XmlDocument::resolve(const std::string& filename, const XmlNode& from) const {
   fs::path p(filename);
   if (p.is_absolute()) {
-    if (fs::exists(p)) return p.string();
+    if (file_exists(p)) return p.string();
   } else {
     for (const std::string& dir : search_paths) {
       fs::path candidate = fs::path(dir) / p;
-      if (fs::exists(candidate)) return candidate.lexically_normal().string();
+      if (file_exists(candidate)) return candidate.lexically_normal().string();
     }
     fs::path beside = fs::path(from.file).parent_path() / p;
-    if (fs::exists(beside)) return beside.lexically_normal().string();
+    if (file_exists(beside)) return beside.lexically_normal().string();
   }
   std::string searched;
   for (const std::string& dir : search_paths) searched += (searched.empty() ? "" : ", ") + dir;
@@ -154,6 +165,7 @@ class Builder {
         out += value[i++];
         continue;
       }
+      used_.insert(key);
       auto it = params_.find(key);
       if (it == params_.end()) {
         throw InputError(file.path, line, "undefined parameter $" + key + " (no <default> and no -D " + key + "=...)");
@@ -174,6 +186,7 @@ class Builder {
       if (!xml.attribute("value")) throw InputError(file.path, line, "<default name=\"" + name + "\"> without a value");
       std::string value = substitute(xml.attribute("value").value(), file, line);
       params_.emplace(name, value);  // the first definition (or the caller's) wins
+      declared_.insert(name);
       return;
     }
     auto node = std::make_unique<XmlNode>();
@@ -215,6 +228,10 @@ class Builder {
 
   XmlDocument& doc_;
   std::map<std::string, std::string> params_;
+
+ public:
+  std::set<std::string> used_;      // $names the document refers to
+  std::set<std::string> declared_;  // <default> names
   std::vector<std::string> stack_;
   std::vector<std::unique_ptr<SourceFile>> files_;
 };
@@ -232,6 +249,10 @@ XmlDocument load_xml_document(const std::string& path,
   doc.search_paths.push_back(folder.empty() ? std::string(".") : folder.string());
   Builder builder(doc, defines);
   builder.load(path, *doc.root, nullptr, true);
+  for (const auto& [name, value] : defines) {
+    if (!builder.used_.count(name) && !builder.declared_.count(name)) doc.unused_defines.push_back(name);
+  }
+  doc.parameters.assign(builder.declared_.begin(), builder.declared_.end());
   return doc;
 }
 

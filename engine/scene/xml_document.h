@@ -33,6 +33,8 @@ struct XmlDocument {
   std::unique_ptr<XmlNode> root;
   std::vector<std::string> search_paths;  // <path> folders (last declared first), then the scene's
   std::map<std::string, const XmlNode*> ids;
+  std::vector<std::string> parameters;      // names of the scene's <default>s
+  std::vector<std::string> unused_defines;  // caller's defines the scene neither declares nor uses
 
   // The element `id` refers to; InputError naming `from` when there is none.
   const XmlNode& lookup(const std::string& id, const XmlNode& from) const;

@@ -1,0 +1,169 @@
+// The command line rejects bad values with a clear message and a non-zero exit, leaves no image
+// behind when it fails, and its informational commands succeed.
+#include <gtest/gtest.h>
+
+#include "cli/cli_harness.h"
+#include "image/image.h"
+#include "image/image_io.h"
+
+namespace gdr::test {
+namespace {
+
+const std::string kCornell = "'" + source_scene("cornell-box.xml") + "'";
+
+// A failed run: non-zero exit, the output mentions `needle`, no image was written.
+void expect_failure(const CliResult& r, const std::string& needle, const TempDir& dir) {
+  EXPECT_NE(r.code, 0) << r.output;
+  EXPECT_NE(r.code, -1) << "gdrender crashed: " << r.output;
+  EXPECT_NE(r.code, 124) << "gdrender did not stop: " << r.output;
+  EXPECT_NE(r.output.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.output;
+  EXPECT_EQ(count_files(dir, ".exr") + count_files(dir, ".png"), 0) << "an image was left behind";
+}
+
+TEST(Cli, NonPositiveSppIsRejected) {
+  TempDir dir;
+  for (const char* spp : {"0", "-4", "abc"}) {
+    expect_failure(run_gdrender(kCornell + " --spp " + spp + " -o out.exr", dir), "--spp", dir);
+  }
+}
+
+TEST(Cli, NonPositiveTimeIsRejected) {
+  TempDir dir;
+  for (const char* t : {"0", "-1", "nan", "inf"}) {
+    expect_failure(run_gdrender(kCornell + " --time " + t + " -o out.exr", dir), "--time", dir);
+  }
+}
+
+TEST(Cli, UnknownIntegratorIsRejected) {
+  TempDir dir;
+  CliResult r = run_gdrender(kCornell + " --integrator bogus -D res=8 --spp 1 -o out.exr", dir);
+  expect_failure(r, "bogus", dir);
+  EXPECT_NE(r.output.find("integrator"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownDeviceListsTheDevices) {
+  TempDir dir;
+  CliResult r = run_gdrender(kCornell + " --device no-such-device-xyz -D res=8 --spp 1 -o out.exr", dir);
+  expect_failure(r, "no-such-device-xyz", dir);
+  CliResult list = run_gdrender("--list-devices", dir);
+  ASSERT_EQ(list.code, 0) << list.output;
+  // The first listed device line appears in the error too, so the user sees what exists.
+  std::string first = list.output.substr(0, list.output.find('\n'));
+  EXPECT_NE(r.output.find(first), std::string::npos) << "error does not list devices: " << r.output;
+}
+
+TEST(Cli, MissingSceneFileIsRejected) {
+  TempDir dir;
+  expect_failure(run_gdrender("no-such-scene.xml -o out.exr", dir), "no-such-scene.xml", dir);
+  expect_failure(run_gdrender("--info no-such-scene.xml", dir), "no-such-scene.xml", dir);
+}
+
+TEST(Cli, MalformedXmlNamesFileAndLine) {
+  TempDir dir;
+  dir.write("bad.xml", "<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n    <float name=\"radius\" value=\"1\"\n"
+                       "  </shape>\n</scene>\n");
+  CliResult r = run_gdrender("bad.xml -o out.exr --spp 1", dir);
+  expect_failure(r, "bad.xml:", dir);
+  // "bad.xml:LINE:" with a line number in the file's range.
+  size_t at = r.output.find("bad.xml:");
+  ASSERT_NE(at, std::string::npos);
+  int line = std::atoi(r.output.c_str() + at + 8);
+  EXPECT_GE(line, 2) << r.output;
+  EXPECT_LE(line, 5) << r.output;
+}
+
+TEST(Cli, BadValueInSceneNamesFileAndLine) {
+  TempDir dir;
+  dir.write("badvalue.xml", "<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n"
+                            "    <float name=\"radius\" value=\"one\"/>\n  </shape>\n</scene>\n");
+  expect_failure(run_gdrender("badvalue.xml -o out.exr --spp 1", dir), "badvalue.xml:3", dir);
+}
+
+TEST(Cli, NanVertexInMeshIsRejected) {
+  TempDir dir;
+  dir.write("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+  dir.write("nan.xml", "<scene version=\"3.0.0\">\n  <shape type=\"obj\">\n"
+                       "    <string name=\"filename\" value=\"nan.obj\"/>\n  </shape>\n</scene>\n");
+  CliResult r = run_gdrender("nan.xml -o out.exr --spp 1", dir);
+  expect_failure(r, "nan.obj", dir);
+}
+
+// A transform that takes vertices beyond float range would leave infinite positions in the scene.
+TEST(Cli, HugeTransformIsRejected) {
+  TempDir dir;
+  dir.write("huge.xml", "<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n"
+                        "    <float name=\"radius\" value=\"1e200\"/>\n  </shape>\n</scene>\n");
+  expect_failure(run_gdrender("huge.xml -o out.exr --spp 1", dir), "huge.xml:2", dir);
+}
+
+TEST(Cli, MalformedDefineIsRejected) {
+  TempDir dir;
+  expect_failure(run_gdrender(kCornell + " -D res -o out.exr", dir), "-D", dir);
+  expect_failure(run_gdrender(kCornell + " -D =5 -o out.exr", dir), "-D", dir);
+}
+
+TEST(Cli, ResolutionDefineSetsTheImageSize) {
+  TempDir dir;
+  CliResult r = run_gdrender(kCornell + " -D res=12 --spp 1 --quiet -o out.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  Image img = read_image(dir.file("out.exr"));
+  EXPECT_EQ(img.width, 12);
+  EXPECT_EQ(img.height, 12);
+  EXPECT_EQ(count_files(dir, ".png"), 1);
+}
+
+// A parameter the scene does not have is not silently ignored: a warning names it and the
+// scene's parameters; with --strict it is an error.
+TEST(Cli, UnknownDefineIsReported) {
+  TempDir dir;
+  const std::string plates = "'" + source_scene("glossy-plates.xml") + "'";
+  CliResult r = run_gdrender(plates + " -D res=8 -D width=8 -D height=8 --spp 1 --quiet -o out.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("no parameter $res"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("width"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("$width"), std::string::npos) << "a used parameter was reported: " << r.output;
+  TempDir strict;
+  expect_failure(run_gdrender(plates + " -D res=8 --strict --spp 1 -o out.exr", strict), "no parameter $res", strict);
+}
+
+TEST(Cli, InfoOfAGoodScene) {
+  TempDir dir;
+  CliResult r = run_gdrender("--info " + kCornell, dir);
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("device"), std::string::npos) << r.output;
+}
+
+TEST(Cli, ListDevices) {
+  TempDir dir;
+  CliResult r = run_gdrender("--list-devices", dir);
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("[0]"), std::string::npos) << "no device listed: " << r.output;
+}
+
+TEST(Cli, Version) {
+  TempDir dir;
+  CliResult r = run_gdrender("--version", dir);
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find(std::string("gdrender ") + GDR_VERSION), std::string::npos) << r.output;
+}
+
+TEST(Cli, NothingToDoIsAUsageError) {
+  TempDir dir;
+  CliResult r = run_gdrender("", dir);
+  EXPECT_EQ(r.code, 2) << r.output;
+}
+
+TEST(Cli, ReconstructWithoutLayersIsRejected) {
+  TempDir dir;
+  Image img(4, 4, {});
+  img.add_rgb_layer("", std::vector<float>(4 * 4 * 3, 0.5f));
+  write_exr(dir.file("plain.exr"), img);
+  CliResult r = run_gdrender("--reconstruct plain.exr -o recon.exr", dir);
+  EXPECT_NE(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("plain.exr"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("primal"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("recon.exr")));
+}
+
+}  // namespace
+}  // namespace gdr::test

@@ -1,0 +1,54 @@
+// Checks shared by the stability tests: render with counters, every value finite, and the image
+// mean against an expected radiance with the pixels' own standard error.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "support/render.h"
+
+namespace gdr::test {
+
+struct Rendered {
+  std::vector<float> rgb;
+  uint64_t nonfinite = 0;
+};
+
+inline Rendered render_checked(const Scene& scene, uint32_t seed, int spp, int max_depth = -1) {
+  RenderSettings settings;
+  settings.spp = spp;
+  settings.seed = seed;
+  settings.max_depth = max_depth;
+  Stats stats;
+  Rendered r;
+  r.rgb = render_pt(scene, settings, &stats);
+  r.nonfinite = stats.count("samples/nonfinite_rejected");
+  return r;
+}
+
+inline bool all_finite(const std::vector<float>& v) {
+  for (float x : v) {
+    if (!std::isfinite(x)) return false;
+  }
+  return true;
+}
+
+// z of mean(rgb - expected) against its standard error; pixels (and channels) are independent
+// estimates, so |z| < 5 fails with probability 5.7e-7 when the expectation is right.
+inline double mean_z(const std::vector<float>& rgb, const std::vector<double>& expected, double* mean_out = nullptr,
+                     double* se_out = nullptr) {
+  double n = double(rgb.size()), sum = 0, sq = 0;
+  for (size_t i = 0; i < rgb.size(); ++i) {
+    double d = double(rgb[i]) - expected[i];
+    sum += d;
+    sq += d * d;
+  }
+  double mean = sum / n;
+  double se = std::sqrt(std::max(0.0, sq / n - mean * mean) / (n - 1));
+  if (mean_out) *mean_out = mean;
+  if (se_out) *se_out = se;
+  return se > 0 ? mean / se : (mean == 0 ? 0.0 : INFINITY);
+}
+
+}  // namespace gdr::test
