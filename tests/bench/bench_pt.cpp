@@ -43,7 +43,7 @@ struct PtBench {
   cl_uint active[2] = {0, 0}, shadows = 0;
 
   static Kernel make(Context& ctx, const Scene& s, const char* name) {
-    return ctx.program("pt/pt.cl", pt_kernel_defines(s))->kernel(name);
+    return ctx.program("pt/pt.cl", scene_kernel_defines(s))->kernel(name);
   }
 
   explicit PtBench(Context& ctx)
@@ -62,16 +62,10 @@ struct PtBench {
         shadow_values(ctx, pixels),
         counters(ctx, PT_COUNTER_COUNT),
         film(ctx, pixels) {
-    params.seed = 1;
-    params.first_pixel = 0;
-    params.pixel_count = pixels;
-    params.sample = 0;
-    params.max_depth = scene.max_depth;
-    params.rr_depth = 5;
-    params.light_count = device_scene->light_count();
-    params.env_light = device_scene->env_light();
-    params.scene_radius = device_scene->scene_radius();
-    params.strategy = PT_STRATEGY_MIS;
+    RenderSettings settings;
+    settings.seed = 1;
+    settings.max_depth = scene.max_depth;
+    params = device_scene->path_params(settings, 0, 0, pixels);
     film.fill(Vec4{});
     run_generate();
     active[0] = pixels;
