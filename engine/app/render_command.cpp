@@ -90,6 +90,8 @@ int render_command(const Options& o) {
   EmbreeScene embree(scene, BuildQuality::High, &stats);
   RenderResult result;
   if (integrator == "gpt") {
+    if (o.strategy != "mis") log::warn("--strategy applies to pt only; gpt always combines both techniques");
+    if (o.aux) log::warn("--aux applies to pt only: no albedo, normal or depth layers");
     GptSettings gpt;
     gpt.shift = o.shift == "replay" ? GPT_SHIFT_REPLAY : GPT_SHIFT_HYBRID;
     gpt.shift_threshold = o.shift_threshold;

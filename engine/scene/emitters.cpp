@@ -61,6 +61,14 @@ void add_area_lights(LoadContext& ctx, const XmlNode& node, int shape_index) {
 void load_emitter(LoadContext& ctx, const XmlNode& node) {
   Props p = ctx.props(node);
   std::string type = p.type();
+  if (type == "constant" || type == "envmap") {
+    // The integrators look up what escaping rays see in a single environment (as Mitsuba does).
+    for (const GdrLight& l : ctx.scene.lights) {
+      if (l.type == LIGHT_CONSTANT || l.type == LIGHT_ENVMAP) {
+        throw InputError(node.file, node.line, "a second environment emitter (only one constant or envmap is allowed)");
+      }
+    }
+  }
   Mat4d to_world = p.get_transform("to_world");
   if (type == "point") {
     GdrLight l = base_light(LIGHT_POINT);

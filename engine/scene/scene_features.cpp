@@ -56,7 +56,7 @@ SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold)
     if (m.type < 0 || m.type >= BSDF_TYPE_COUNT) continue;
     f.bsdf[m.type] = true;
     if (is_delta_bsdf(m.type)) f.delta_surfaces = true;
-    if (is_rough_bsdf(m.type) && std::min(m.alpha_u, m.alpha_v) < glossy_threshold) f.near_delta_surfaces = true;
+    if (is_rough_bsdf(m.type) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) f.near_delta_surfaces = true;
     if (m.reflectance_texture >= 0) f.textures = true;
   }
   for (const GdrLight& l : scene.lights) {
@@ -72,7 +72,7 @@ SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold)
     const GdrMaterial& m = scene.materials[i];
     std::string name = i < scene.material_names.size() ? scene.material_names[i] : std::to_string(i);
     if (is_delta_bsdf(m.type)) f.delta_materials.push_back(name + " (" + bsdf_type_name(m.type) + ")");
-    if (is_rough_bsdf(m.type) && std::min(m.alpha_u, m.alpha_v) < glossy_threshold) {
+    if (is_rough_bsdf(m.type) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) {
       std::ostringstream s;
       s << name << " (" << bsdf_type_name(m.type) << ", alpha " << std::min(m.alpha_u, m.alpha_v) << ")";
       f.near_delta_materials.push_back(s.str());
@@ -88,7 +88,6 @@ std::map<std::string, std::string> SceneFeatures::kernel_defines() const {
   for (int i = 0; i < LIGHT_TYPE_COUNT; ++i)
     if (light[i]) d["GDR_LIGHT_" + std::string(kLightDefines[i])] = "1";
   if (textures) d["GDR_TEXTURES"] = "1";
-  if (specular_chains()) d["GDR_SPECULAR_CHAINS"] = "1";
   return d;
 }
 

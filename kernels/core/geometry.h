@@ -16,7 +16,6 @@ inline float3 xform_vector(const float* m, float3 v) {
 }
 
 inline float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
-inline float luminance(float3 c) { return 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z; }
 
 // Moves a ray origin off the surface along the normal by a few ulps of the position (Wächter and
 // Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems 2019): no
@@ -44,8 +43,10 @@ inline float2 sample_triangle_barycentrics(float2 u) {
   return (float2)(su * (1.0f - u.y), su * u.y);
 }
 
-// Power heuristic (beta = 2) weight of strategy a against strategy b.
+// Power heuristic (beta = 2) weight of strategy a against strategy b, written with the ratio so
+// that huge pdfs cannot overflow when squared.
 inline float power_heuristic(float pdf_a, float pdf_b) {
-  float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
-  return a + b > 0.0f ? a / (a + b) : 0.0f;
+  if (!(pdf_a > 0.0f)) return 0.0f;
+  float r = pdf_b / pdf_a;
+  return isfinite(r) ? 1.0f / (1.0f + r * r) : 0.0f;
 }

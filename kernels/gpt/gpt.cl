@@ -165,10 +165,12 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
           if (!offset_alive(&o[k])) {
             w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
           } else {
+            // A traced offset escaped along its own direction; a joined one along the base's.
+            float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
             float p_off = o[k].last_pdf;
-            float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, dir);
+            float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, d_off);
             w = gpt_weight(p_bsdf, p_light, o[k].ratio * safe_div(p_bsdf, p_off), p_off, q_off);
-            c_off = vload3(0, o[k].throughput) * environment_radiance(&s, env, vload3(0, o[k].dir));
+            c_off = vload3(0, o[k].throughput) * environment_radiance(&s, env, d_off);
           }
           acc_add(acc, base.pixel, GPT_ACC_BASE(k), checked(w * beta * le, counters));
           acc_add(acc, base.pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
@@ -245,14 +247,15 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     float4 ul = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_LIGHT(base.depth));
     int light = light_select(&s, ul.x);
     LightSample ls;
-    if (light_sample(&s, light, su.p, ul.yz, &ls)) {
-      float3 wi_l = frame_to_local(&frame, ls.wi);
-      float3 c_base = (float3)(0.0f);
-      float p_light = ls.pdf, p_b = 0.0f;
-      if (dot(ls.wi, su.ng) * wi_l.z > 0.0f) {
-        c_base = beta * bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;
-        if (!ls.delta) p_b = bsdf_pdf(&b, wo_l, wi_l);
-      }
+    int usable = light_sample(&s, light, su.p, ul.yz, &ls);
+    float3 wi_l = usable ? frame_to_local(&frame, ls.wi) : (float3)(0.0f);
+    // A light sample the base cannot use (shading and geometric normals disagree) is no sample
+    // at all, also for its offsets: the neighbour's base rejects the mirrored case the same way,
+    // which keeps the pairwise weights summing to one.
+    if (usable && dot(ls.wi, su.ng) * wi_l.z > 0.0f) {
+      float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
+      float3 c_base = beta * f_le;
+      float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
       int base_ray_needed = 0;
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         float w = gpt_weight(p_light, p_b, 0.0f, 0.0f, 0.0f);
@@ -260,13 +263,12 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
         int own_ray = 0;
         if (o[k].mode == GPT_MODE_JOINED) {
           w = gpt_weight(p_light, p_b, o[k].ratio, p_light, p_b);
-          c_off = vload3(0, o[k].throughput) * (c_base / beta);
+          c_off = vload3(0, o[k].throughput) * f_le;
         } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
           float3 wr = frame_to_local(&frame, wo_off[k]);
           float q_b = ls.delta ? 0.0f : bsdf_pdf(&b, wr, wi_l);
           w = gpt_weight(p_light, p_b, o[k].ratio, p_light, q_b);
-          if (dot(ls.wi, su.ng) * wi_l.z > 0.0f)
-            c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf;
+          c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf;
         } else if (o[k].mode == GPT_MODE_TRACE) {
           Bsdf bo = surface_bsdf(&s, &so[k]);
           LightSample lo = ls;
@@ -309,7 +311,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   float4 ub = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth));
   BsdfSample bs;
   int alive = bsdf_sample(&b, wo_l, ub.xyz, &bs);
-  float3 wi = frame_to_world(&frame, bs.wi);
+  float3 wi = alive ? frame_to_world(&frame, bs.wi) : wo;
   alive = alive && dot(wi, su.ng) * bs.wi.z > 0.0f;
   if (alive) {
     beta *= bs.weight;
@@ -353,7 +355,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       t /= rr;
     }
     if (!is_finite3(t) || !isfinite(o[k].ratio)) {
-      kill_offset(&o[k], counters, GPT_COUNTER_NONFINITE);
+      kill_offset(&o[k], counters, GPT_COUNTER_FAIL_NONFINITE);
       continue;
     }
     vstore3(t, 0, o[k].throughput);
@@ -387,6 +389,9 @@ __kernel void gpt_shadow(uint count, __global const GdrRay* shadow_rays, __globa
   if (r.tfar < 0.0f) return;
   uint g = r.id / 8u, kind = r.id % 8u;
   uint pixel = bases[g].pixel;
+  // The base's ray (kind 0) and offset k's own ray both add to ACC_OFFSET(k) without atomics:
+  // safe because an offset is either joined (its share rides on the base's ray, PEND_JOINED) or
+  // traced (its own ray, PEND_OWN), never both, and acc_add skips the zero entries.
   if (kind == 0u) {
     for (int k = 0; k < GPT_OFFSETS; ++k) {
       acc_add(acc, pixel, GPT_ACC_BASE(k), pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)].xyz);
@@ -516,7 +521,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
       o.ratio *= fmin(max3(t / o.ratio), 0.95f) / base.rr_prob;
       t /= base.rr_prob;
     }
-    if (!reason && (!is_finite3(t) || !isfinite(o.ratio))) reason = GPT_COUNTER_NONFINITE;
+    if (!reason && (!is_finite3(t) || !isfinite(o.ratio))) reason = GPT_COUNTER_FAIL_NONFINITE;
     if (reason) {
       kill_offset(&o, counters, reason);
       *og = o;

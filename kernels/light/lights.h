@@ -62,7 +62,7 @@ inline float3 environment_radiance(const SceneData* s, __global const GdrLight* 
   if (l->type == LIGHT_ENVMAP) {
     float to_local[12];
     copy_matrix(l->to_local, to_local);
-    float2 uv = envmap_uv(xform_vector(to_local, dir));
+    float2 uv = envmap_uv(normalize(xform_vector(to_local, dir)));
     // texture_eval flips v for bitmaps (v = 0 at the bottom); the lat-long map starts at the top.
     return texture_eval(s, l->texture, (float2)(uv.x, 1.0f - uv.y)) * vload3(0, l->radiance);
   }
@@ -103,7 +103,7 @@ inline float environment_pdf(const SceneData* s, float3 dir) {
   if (l->type == LIGHT_ENVMAP) {
     float to_local[12];
     copy_matrix(l->to_local, to_local);
-    float2 uv = envmap_uv(xform_vector(to_local, dir));
+    float2 uv = envmap_uv(normalize(xform_vector(to_local, dir)));
     float sin_theta = sin(M_PI_F * uv.y);
     return sin_theta > 0.0f ? pmf * envmap_uv_pdf(s, l, uv) / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
   }

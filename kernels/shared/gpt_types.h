@@ -37,7 +37,7 @@ typedef struct GptOffsetState {
 
 typedef struct GptBaseState {
   float throughput[3];
-  float bsdf_pdf;       // solid-angle pdf of the last BSDF sample (0 after a delta lobe)
+  float bsdf_pdf;       // pdf of the last BSDF sample (solid angle; a delta lobe's selection probability)
   unsigned int pixel;
   unsigned int sample;
   int depth;
@@ -96,4 +96,5 @@ typedef struct GdrGptParams {
 #define GPT_COUNTER_FAIL_OCCLUDED 13       // reconnection segment blocked
 #define GPT_COUNTER_FAIL_ENVIRONMENT 14    // one path escaped, the other hit geometry
 #define GPT_COUNTER_FAIL_ZERO 15           // zero pdf or value, or inconsistent sides
-#define GPT_COUNTER_COUNT 16
+#define GPT_COUNTER_FAIL_NONFINITE 16      // the offset's throughput or pdf ratio overflowed
+#define GPT_COUNTER_COUNT 17

@@ -6,13 +6,15 @@
 
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "scene/load_scene.h"
+#include "support/envmap_scene.h"
 #include "support/render.h"
 #include "support/statistics.h"
 
 namespace gdr {
 namespace {
 
-constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4, kMaxDepth = 5;
+// Paths of up to 8 segments, so Russian roulette (from the 5th bounce) decides some of them.
+constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4, kMaxDepth = 8;
 
 struct Stat {  // per run, per block: sums of dx, dy and of the primal
   std::vector<double> dx, dy, primal;
@@ -51,8 +53,7 @@ void differences(int w, int h, const std::vector<float>& img, std::vector<float>
   }
 }
 
-void expect_unbiased(const std::string& scene_file, int shift) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
+void expect_unbiased(Scene scene, const std::string& scene_file, int shift) {
   const int w = kWidth;
   const int h = std::max(kBlock, (kWidth * scene.camera.height / scene.camera.width) / kBlock * kBlock);
   scene.camera.width = w;
@@ -101,6 +102,10 @@ void expect_unbiased(const std::string& scene_file, int shift) {
   }
 }
 
+void expect_unbiased(const std::string& scene_file, int shift) {
+  expect_unbiased(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file), scene_file, shift);
+}
+
 TEST(GptUnbiased, DiffuseCornellBoxHybrid) { expect_unbiased("cornell-box.xml", GPT_SHIFT_HYBRID); }
 TEST(GptUnbiased, DiffuseCornellBoxReplay) { expect_unbiased("cornell-box.xml", GPT_SHIFT_REPLAY); }
 TEST(GptUnbiased, GlossyPlatesHybrid) { expect_unbiased("glossy-plates.xml", GPT_SHIFT_HYBRID); }
@@ -108,5 +113,12 @@ TEST(GptUnbiased, GlossyPlatesReplay) { expect_unbiased("glossy-plates.xml", GPT
 TEST(GptUnbiased, MirrorAndGlassHybrid) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_HYBRID); }
 TEST(GptUnbiased, MirrorAndGlassReplay) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_REPLAY); }
 
+}  // namespace
+}  // namespace gdr
+
+namespace gdr {
+namespace {
+TEST(GptUnbiased, EnvironmentMapHybrid) { expect_unbiased(test::envmap_scene(), "envmap scene", GPT_SHIFT_HYBRID); }
+TEST(GptUnbiased, EnvironmentMapReplay) { expect_unbiased(test::envmap_scene(), "envmap scene", GPT_SHIFT_REPLAY); }
 }  // namespace
 }  // namespace gdr

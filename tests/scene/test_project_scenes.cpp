@@ -76,7 +76,6 @@ TEST(ProjectScenes, CausticsSceneHasSpecularChains) {
   EXPECT_TRUE(f.bsdf[BSDF_DIELECTRIC]);
   EXPECT_TRUE(f.delta_surfaces);
   EXPECT_TRUE(f.specular_chains());
-  EXPECT_EQ(f.kernel_defines().count("GDR_SPECULAR_CHAINS"), 1u);
   EXPECT_NE(f.describe().find("specular chains: on"), std::string::npos) << f.describe();
   EXPECT_NE(f.describe().find("glass"), std::string::npos) << f.describe();
 }

@@ -15,7 +15,8 @@ const char* kShiftCounterNames[GPT_COUNTER_COUNT] = {
     nullptr, nullptr, nullptr, nullptr, "samples/nonfinite_rejected",
     "shifts/reconnection", "shifts/half_vector", "shifts/delta_lobe", "shifts/direction_copy", "shifts/replay",
     "shift_failures/outside_image", "shift_failures/lobe_mismatch", "shift_failures/refraction",
-    "shift_failures/occluded", "shift_failures/environment_mismatch", "shift_failures/zero_pdf_or_value"};
+    "shift_failures/occluded", "shift_failures/environment_mismatch", "shift_failures/zero_pdf_or_value",
+    "shift_failures/nonfinite"};
 
 Kernel gpt_kernel(Context& ctx, const Scene& scene, const char* name) {
   return ctx.program("gpt/gpt.cl", scene_kernel_defines(scene))->kernel(name);
