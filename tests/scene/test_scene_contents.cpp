@@ -240,7 +240,7 @@ TEST(SceneTextures, BitmapIsDecodedToLinearAndCheckerboard) {
   EXPECT_EQ(s.features.kernel_defines().count("GDR_TEXTURES"), 1u);
 }
 
-TEST(SceneEmitters, PointSpotDirectionalConstantEnvmap) {
+TEST(SceneEmitters, PointSpotDirectionalEnvmap) {
   test::TempFolder folder;
   Image env(4, 2, {"R", "G", "B"});
   env.pixels.assign(4 * 2 * 3, 2.0f);
@@ -249,10 +249,9 @@ TEST(SceneEmitters, PointSpotDirectionalConstantEnvmap) {
     <emitter type="point"><point name="position" x="1" y="2" z="3"/><rgb name="intensity" value="10"/></emitter>
     <emitter type="spot"><transform name="to_world"><lookat origin="0 0 5" target="0 0 0" up="0 1 0"/></transform></emitter>
     <emitter type="directional"><vector name="direction" x="0" y="-2" z="0"/><rgb name="irradiance" value="3"/></emitter>
-    <emitter type="constant"><rgb name="radiance" value="0.5"/></emitter>
     <emitter type="envmap"><string name="filename" value="sky.exr"/><float name="scale" value="4"/>
       <transform name="to_world"><rotate y="1" angle="90"/><translate x="100"/></transform></emitter>)");
-  ASSERT_EQ(s.lights.size(), 5u);
+  ASSERT_EQ(s.lights.size(), 4u);
   EXPECT_EQ(s.lights[0].type, LIGHT_POINT);
   EXPECT_FLOAT_EQ(s.lights[0].position[2], 3.0f);
   EXPECT_FLOAT_EQ(s.lights[0].radiance[1], 10.0f);
@@ -263,8 +262,7 @@ TEST(SceneEmitters, PointSpotDirectionalConstantEnvmap) {
   const GdrLight& sun = s.lights[2];
   EXPECT_FLOAT_EQ(sun.direction[1], -1.0f);
   EXPECT_NEAR(sun.scene_radius, std::sqrt(3.0f), 1e-5);  // the [-1,1]^3 cube
-  EXPECT_EQ(s.lights[3].type, LIGHT_CONSTANT);
-  const GdrLight& envl = s.lights[4];
+  const GdrLight& envl = s.lights[3];
   EXPECT_EQ(envl.type, LIGHT_ENVMAP);
   ASSERT_GE(envl.texture, 0);
   EXPECT_EQ(s.textures[envl.texture].width, 4);
@@ -277,10 +275,33 @@ TEST(SceneEmitters, PointSpotDirectionalConstantEnvmap) {
   EXPECT_TRUE(f.delta_lights);
   EXPECT_TRUE(f.environment);
   std::map<std::string, std::string> d = f.kernel_defines();
-  for (const char* name : {"GDR_LIGHT_POINT", "GDR_LIGHT_SPOT", "GDR_LIGHT_DIRECTIONAL", "GDR_LIGHT_CONSTANT",
-                           "GDR_LIGHT_ENVMAP"})
+  for (const char* name : {"GDR_LIGHT_POINT", "GDR_LIGHT_SPOT", "GDR_LIGHT_DIRECTIONAL", "GDR_LIGHT_ENVMAP"})
     EXPECT_EQ(d.count(name), 1u) << name;
   EXPECT_EQ(d.count("GDR_LIGHT_AREA"), 0u);
+}
+
+TEST(SceneEmitters, ConstantEnvironment) {
+  test::TempFolder folder;
+  Scene s = load_body(folder, R"(<shape type="cube"/>
+    <emitter type="constant"><rgb name="radiance" value="0.5"/></emitter>)");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].type, LIGHT_CONSTANT);
+  EXPECT_FLOAT_EQ(s.lights[0].radiance[2], 0.5f);
+  EXPECT_TRUE(s.features.environment);
+  EXPECT_EQ(s.features.kernel_defines().count("GDR_LIGHT_CONSTANT"), 1u);
+}
+
+TEST(SceneEmitters, SecondEnvironmentIsAnError) {
+  test::TempFolder folder;
+  try {
+    load_body(folder, R"(<shape type="cube"/>
+    <emitter type="constant"/>
+    <emitter type="constant"/>)");
+    FAIL() << "two environment emitters must not load";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("second environment emitter"), std::string::npos) << e.what();
+    EXPECT_GT(e.line(), 0);
+  }
 }
 
 TEST(SceneSensor, FovAxesFocalLengthAndFilters) {
