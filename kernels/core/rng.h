@@ -8,10 +8,17 @@
 #define GDR_PHILOX_W0 0x9E3779B9u
 #define GDR_PHILOX_W1 0xBB67AE85u
 
+// One 32x32 -> 64-bit product gives both halves. (PoCL's CPU mul_hi(uint) is built from four
+// 16-bit products, which made Philox the largest cost of the shading kernels.)
+inline uint2 philox_mulhilo(uint a, uint b) {
+  ulong p = (ulong)a * (ulong)b;
+  return (uint2)((uint)(p >> 32), (uint)p);
+}
+
 inline uint4 philox4x32_10(uint4 c, uint2 k) {
   for (int i = 0; i < 10; ++i) {
-    uint hi0 = mul_hi(GDR_PHILOX_M0, c.x), lo0 = GDR_PHILOX_M0 * c.x;
-    uint hi1 = mul_hi(GDR_PHILOX_M1, c.z), lo1 = GDR_PHILOX_M1 * c.z;
+    uint2 p0 = philox_mulhilo(GDR_PHILOX_M0, c.x), p1 = philox_mulhilo(GDR_PHILOX_M1, c.z);
+    uint hi0 = p0.x, lo0 = p0.y, hi1 = p1.x, lo1 = p1.y;
     c = (uint4)(hi1 ^ c.y ^ k.x, lo1, hi0 ^ c.w ^ k.y, lo0);
     k += (uint2)(GDR_PHILOX_W0, GDR_PHILOX_W1);
   }
