@@ -8,14 +8,22 @@
 #define GDR_PHILOX_W0 0x9E3779B9u
 #define GDR_PHILOX_W1 0xBB67AE85u
 
+// Each round takes both halves of its products from one 32x32 -> 64-bit multiply, and the state
+// lives in scalars: PoCL's CPU mul_hi(uint) is built from four 16-bit products, and uint4 state
+// compiles to lane inserts and extracts, which together made Philox the largest cost of the
+// shading kernels.
 inline uint4 philox4x32_10(uint4 c, uint2 k) {
+  uint c0 = c.x, c1 = c.y, c2 = c.z, c3 = c.w, k0 = k.x, k1 = k.y;
   for (int i = 0; i < 10; ++i) {
-    uint hi0 = mul_hi(GDR_PHILOX_M0, c.x), lo0 = GDR_PHILOX_M0 * c.x;
-    uint hi1 = mul_hi(GDR_PHILOX_M1, c.z), lo1 = GDR_PHILOX_M1 * c.z;
-    c = (uint4)(hi1 ^ c.y ^ k.x, lo1, hi0 ^ c.w ^ k.y, lo0);
-    k += (uint2)(GDR_PHILOX_W0, GDR_PHILOX_W1);
+    ulong p0 = (ulong)GDR_PHILOX_M0 * (ulong)c0, p1 = (ulong)GDR_PHILOX_M1 * (ulong)c2;
+    c0 = (uint)(p1 >> 32) ^ c1 ^ k0;
+    c1 = (uint)p1;
+    c2 = (uint)(p0 >> 32) ^ c3 ^ k1;
+    c3 = (uint)p0;
+    k0 += GDR_PHILOX_W0;
+    k1 += GDR_PHILOX_W1;
   }
-  return c;
+  return (uint4)(c0, c1, c2, c3);
 }
 
 // 24-bit mantissa: uniform in [0, 1), never 1.

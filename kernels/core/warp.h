@@ -14,7 +14,10 @@ inline float2 square_to_uniform_disk_concentric(float2 u) {
     r = y;
     phi = (M_PI_F / 2.0f) - (M_PI_F / 4.0f) * (x / y);
   }
-  return (float2)(r * cos(phi), r * sin(phi));
+  // sincos shares one argument reduction between the two (same values as sin and cos).
+  float c;
+  float sn = sincos(phi, &c);
+  return (float2)(r * c, r * sn);
 }
 
 // Cosine-weighted hemisphere around +z (Malley's method).
