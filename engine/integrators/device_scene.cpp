@@ -39,9 +39,6 @@ DeviceScene::DeviceScene(Context& ctx, const Scene& s, std::vector<float> env_ta
   for (size_t i = 0; i < s.lights.size(); ++i) {
     if (s.lights[i].type == LIGHT_CONSTANT || s.lights[i].type == LIGHT_ENVMAP) env_light_ = static_cast<int>(i);
   }
-  float extent = 0;
-  for (int a = 0; a < 3; ++a) extent = std::max(extent, s.bounds_max[a] - s.bounds_min[a]);
-  scene_radius_ = std::max(0.5f * std::sqrt(3.0f) * extent, 1e-6f);
 }
 
 void DeviceScene::set_args(Kernel& k, cl_uint first) const {
@@ -70,7 +67,6 @@ GdrPtParams DeviceScene::path_params(const RenderSettings& settings, uint32_t sa
   p.rr_depth = settings.rr_depth;
   p.light_count = light_count_;
   p.env_light = env_light_;
-  p.scene_radius = scene_radius_;
   p.strategy = settings.strategy;
   p.width = width_;
   p.height = height_;

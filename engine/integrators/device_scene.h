@@ -17,9 +17,6 @@ class DeviceScene {
   // Sets the SCENE_DATA_ARGS of `kernel` starting at argument `first`.
   void set_args(Kernel& kernel, cl_uint first) const;
 
-  int light_count() const { return light_count_; }
-  int env_light() const { return env_light_; }
-  float scene_radius() const { return scene_radius_; }
   const Buffer<GdrCamera>& camera() const { return camera_; }
 
   // The launch parameters every path-based kernel shares, for pixels [first, first + count).
@@ -43,7 +40,6 @@ class DeviceScene {
   Buffer<GdrCamera> camera_;
   int light_count_ = 0;
   int env_light_ = -1;
-  float scene_radius_ = 1.0f;
   int width_ = 0, height_ = 0;
 };
 

@@ -22,8 +22,7 @@
 #define OFFSET_PIXEL_DY(k) ((k) == GPT_DIR_PY ? 1 : (k) == GPT_DIR_NY ? -1 : 0)
 
 inline SceneData gpt_scene(const GdrGptParams* p, SCENE_DATA_ARGS) {
-  return scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights, light_cdf, env_cdf,
-                         p->path.light_count, p->path.env_light, p->path.scene_radius);
+  return scene_data_make(SCENE_DATA_NAMES, p->path.light_count, p->path.env_light);
 }
 
 // Accumulators are indexed by pixel over the whole image, so gpt_gather can read neighbours.
@@ -123,8 +122,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
                         __global uint* counters, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
-  SceneData s = gpt_scene(&params, triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                          light_cdf, env_cdf);
+  SceneData s = gpt_scene(&params, SCENE_DATA_NAMES);
   GdrRayHit rh = base_in[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];
@@ -410,8 +408,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
                         __global uint* counters, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
-  SceneData s = gpt_scene(&params, triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                          light_cdf, env_cdf);
+  SceneData s = gpt_scene(&params, SCENE_DATA_NAMES);
   GdrRayHit rh = base_rays[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];

@@ -58,8 +58,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
                        SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
-  SceneData s = scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                                light_cdf, env_cdf, params.light_count, params.env_light, params.scene_radius);
+  SceneData s = scene_data_make(SCENE_DATA_NAMES, params.light_count, params.env_light);
   uint slot = queue_in[q];
   GdrPathState st = paths[slot];
   GdrRayHit rh = rays_in[q];
@@ -165,8 +164,7 @@ __kernel void pt_aux(GdrPtParams params, uint count, __global const GdrRayHit* r
   if (i >= count) return;
   GdrRayHit rh = rays[i];
   if (rh.hit.geomID == GDR_INVALID_ID) return;
-  SceneData s = scene_data_make(triangles, positions, normals, uvs, shapes, materials, textures, texels, lights,
-                                light_cdf, env_cdf, params.light_count, params.env_light, params.scene_radius);
+  SceneData s = scene_data_make(SCENE_DATA_NAMES, params.light_count, params.env_light);
   Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
   Bsdf b = bsdf_from_material(&s.materials[su.material], surface_reflectance(&s, &su));
   float3 a = bsdf_has_diffuse_lobe(&b) ? b.diffuse : b.specular_r;

@@ -17,7 +17,6 @@ typedef struct SceneData {
   __global const float* env_cdf;    // envmap sampling tables (engine/integrators/environment_distribution.h)
   int light_count;
   int env_light;  // index of the environment light, or -1
-  float scene_radius;
 } SceneData;
 
 // The argument list every scene-reading kernel declares, and the call that packs it.
@@ -28,7 +27,11 @@ typedef struct SceneData {
       __global const float4 *texels, __global const GdrLight *lights, __global const float *light_cdf, \
       __global const float *env_cdf
 
-inline SceneData scene_data_make(SCENE_DATA_ARGS, int light_count, int env_light, float scene_radius) {
+// The same arguments by name, to pass them on.
+#define SCENE_DATA_NAMES \
+  triangles, positions, normals, uvs, shapes, materials, textures, texels, lights, light_cdf, env_cdf
+
+inline SceneData scene_data_make(SCENE_DATA_ARGS, int light_count, int env_light) {
   SceneData s;
   s.triangles = triangles;
   s.positions = positions;
@@ -43,6 +46,5 @@ inline SceneData scene_data_make(SCENE_DATA_ARGS, int light_count, int env_light
   s.env_cdf = env_cdf;
   s.light_count = light_count;
   s.env_light = env_light;
-  s.scene_radius = scene_radius;
   return s;
 }

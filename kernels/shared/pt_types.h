@@ -22,7 +22,6 @@ typedef struct GdrPtParams {
   int rr_depth;              // bounces before Russian roulette starts
   int light_count;
   int env_light;             // index of the environment light, or -1
-  float scene_radius;
   int strategy;              // PT_STRATEGY_*
   int width;                 // film size
   int height;
