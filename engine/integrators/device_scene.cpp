@@ -1,7 +1,5 @@
 #include "integrators/device_scene.h"
 
-#include <algorithm>
-#include <cmath>
 
 #include "integrators/environment_distribution.h"
 #include "integrators/light_distribution.h"
