@@ -1,0 +1,41 @@
+// G-PT gather: a pass's per-pixel sums into primal, gradient and direct-light films.
+#pragma once
+#include "gpt/common.h"
+
+// One pass's sums into the film: the primal (each pixel the mean of its four pairwise
+// estimates), the forward-difference gradients, and directly seen emission.
+__kernel void gpt_gather(int width, int height, __global const float4* acc, __global float4* primal,
+                         __global float4* dx, __global float4* dy, __global float4* direct,
+                         __global float4* primal_sq) {
+  uint p = get_global_id(0);
+  if (p >= (uint)(width * height)) return;
+  int x = (int)(p % (uint)width), y = (int)(p / (uint)width);
+  float3 pairs = (float3)(0.0f);
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    pairs += acc[p * GPT_ACC_COUNT + GPT_ACC_BASE(k)].xyz;
+    int nx = x + OFFSET_PIXEL_DX(k), ny = y + OFFSET_PIXEL_DY(k);
+    if (nx >= 0 && ny >= 0 && nx < width && ny < height) {
+      uint n = (uint)(ny * width + nx);
+      int opposite = k ^ 1;  // PX <-> NX, PY <-> NY
+      pairs += acc[n * GPT_ACC_COUNT + GPT_ACC_OFFSET(opposite)].xyz;
+    }
+  }
+  float3 d = acc[p * GPT_ACC_COUNT + GPT_ACC_DIRECT].xyz;
+  float3 value = 0.25f * pairs + d;
+  float3 gx = (float3)(0.0f), gy = (float3)(0.0f);
+  if (x + 1 < width) {
+    uint n = p + 1u;
+    gx = (acc[p * GPT_ACC_COUNT + GPT_ACC_OFFSET(GPT_DIR_PX)].xyz - acc[p * GPT_ACC_COUNT + GPT_ACC_BASE(GPT_DIR_PX)].xyz) +
+         (acc[n * GPT_ACC_COUNT + GPT_ACC_BASE(GPT_DIR_NX)].xyz - acc[n * GPT_ACC_COUNT + GPT_ACC_OFFSET(GPT_DIR_NX)].xyz);
+  }
+  if (y + 1 < height) {
+    uint n = p + (uint)width;
+    gy = (acc[p * GPT_ACC_COUNT + GPT_ACC_OFFSET(GPT_DIR_PY)].xyz - acc[p * GPT_ACC_COUNT + GPT_ACC_BASE(GPT_DIR_PY)].xyz) +
+         (acc[n * GPT_ACC_COUNT + GPT_ACC_BASE(GPT_DIR_NY)].xyz - acc[n * GPT_ACC_COUNT + GPT_ACC_OFFSET(GPT_DIR_NY)].xyz);
+  }
+  primal[p] += (float4)(value, 0.0f);
+  dx[p] += (float4)(gx, 0.0f);
+  dy[p] += (float4)(gy, 0.0f);
+  direct[p] += (float4)(d, 0.0f);
+  primal_sq[p] += (float4)(value * value, 0.0f);
+}

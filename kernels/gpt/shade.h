@@ -1,0 +1,292 @@
+// G-PT shade step: emission and next-event estimation of the base and its offsets with the
+// pairwise MIS weights, then the base's BSDF sample (offsets that share its vertex follow).
+#pragma once
+#include "core/rng.h"
+#include "gpt/common.h"
+#include "gpt/shift.h"
+#include "light/lights.h"
+
+__kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
+                        __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
+                        __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
+                        __global uint* counters, SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  SceneData s = gpt_scene(&params, SCENE_DATA_NAMES);
+  GdrRayHit rh = base_in[q];
+  uint g = rh.ray.id;
+  GptBaseState base = bases[g];
+  GptOffsetState o[GPT_OFFSETS];
+  for (int k = 0; k < GPT_OFFSETS; ++k) o[k] = offsets[g * GPT_OFFSETS + k];
+  for (int j = 0; j < GPT_PEND_COUNT; ++j) pend[g * GPT_PEND_COUNT + j] = (float4)(0.0f);
+
+  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  float3 beta = vload3(0, base.throughput);
+  int base_hit = rh.hit.geomID != GDR_INVALID_ID;
+  int direct = base.depth == 0;  // emission seen from the camera stays out of the gradients
+
+  // Outcomes of the last shift step: where each offset got to.
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (o[k].mode == GPT_MODE_TRACE && (o[k].prim != GDR_INVALID_ID) != base_hit) {
+      kill_offset(&o[k], counters, GPT_COUNTER_FAIL_ENVIRONMENT);
+    } else if (o[k].mode == GPT_MODE_RECONNECTING) {
+      if (o[k].visible) o[k].mode = GPT_MODE_JOINED_RECENT;
+      else kill_offset(&o[k], counters, GPT_COUNTER_FAIL_OCCLUDED);
+    }
+  }
+
+  float p_bsdf = base.bsdf_pdf;
+  int last_specular = (base.flags & PATH_FLAG_SPECULAR) != 0;
+
+  if (!base_hit) {
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+    if (s.env_light >= 0) {
+      __global const GdrLight* env = &s.lights[s.env_light];
+      float3 le = environment_radiance(&s, env, dir);
+      if (direct) {
+        acc_add(acc, base.pixel, GPT_ACC_DIRECT, checked(beta * le, counters));
+      } else {
+        float p_light = last_specular ? 0.0f : environment_pdf(&s, dir);
+        for (int k = 0; k < GPT_OFFSETS; ++k) {
+          float w;
+          float3 c_off = (float3)(0.0f);
+          if (!offset_alive(&o[k])) {
+            w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
+          } else {
+            // A traced offset escaped along its own direction; a joined one along the base's.
+            float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
+            float p_off = o[k].last_pdf;
+            float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, d_off);
+            w = gpt_weight(p_bsdf, p_light, o[k].ratio * safe_div(p_bsdf, p_off), p_off, q_off);
+            c_off = vload3(0, o[k].throughput) * environment_radiance(&s, env, d_off);
+          }
+          acc_add(acc, base.pixel, GPT_ACC_BASE(k), checked(w * beta * le, counters));
+          acc_add(acc, base.pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
+        }
+      }
+    }
+#endif
+    for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
+    return;
+  }
+
+  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  float3 wo = -dir;
+  Surface so[GPT_OFFSETS];   // the offsets' current vertices
+  float3 wo_off[GPT_OFFSETS];  // and their directions toward their previous vertices (world)
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    so[k] = su;
+    wo_off[k] = wo;
+    if (o[k].mode == GPT_MODE_TRACE) {
+      so[k] = surface_at(&s, o[k].prim, o[k].b1, o[k].b2);
+      wo_off[k] = -vload3(0, o[k].dir);
+    } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
+      wo_off[k] = normalize_or(vload3(0, o[k].prev_pos) - su.p, wo);
+    }
+  }
+
+#if defined(GDR_LIGHT_AREA)
+  // Emission found by BSDF sampling.
+  if (su.light >= 0 || !direct) {
+    float3 le = su.light >= 0 ? area_radiance(&s, su.light, su.ng, wo) : (float3)(0.0f);
+    if (direct) {
+      acc_add(acc, base.pixel, GPT_ACC_DIRECT, checked(beta * le, counters));
+    } else {
+      float p_light = (last_specular || su.light < 0) ? 0.0f : area_pdf(&s, su.light, su.area, rh.ray.tfar, dot(su.ng, wo));
+      for (int k = 0; k < GPT_OFFSETS; ++k) {
+        float w;
+        float3 c_off = (float3)(0.0f);
+        if (!offset_alive(&o[k])) {
+          w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
+        } else {
+          float3 le_off = (float3)(0.0f);
+          float q_off = 0.0f;
+          if (so[k].light >= 0) {
+            float dist = o[k].mode == GPT_MODE_TRACE          ? o[k].t
+                         : o[k].mode == GPT_MODE_JOINED_RECENT ? length(vload3(0, o[k].prev_pos) - su.p)
+                                                               : rh.ray.tfar;
+            le_off = area_radiance(&s, so[k].light, so[k].ng, wo_off[k]);
+            if (!o[k].last_delta) q_off = area_pdf(&s, so[k].light, so[k].area, dist, dot(so[k].ng, wo_off[k]));
+          }
+          float p_off = o[k].last_pdf;
+          w = gpt_weight(p_bsdf, p_light, o[k].ratio * safe_div(p_bsdf, p_off), p_off, q_off);
+          c_off = vload3(0, o[k].throughput) * le_off;
+        }
+        if (su.light >= 0 || c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f) {
+          acc_add(acc, base.pixel, GPT_ACC_BASE(k), checked(w * beta * le, counters));
+          acc_add(acc, base.pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
+        }
+      }
+    }
+  }
+#endif
+
+  if (params.path.max_depth > 0 && base.depth + 2 > params.path.max_depth) {
+    for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
+    return;
+  }
+
+  Bsdf b = surface_bsdf(&s, &su);
+  Frame frame = frame_from_normal(su.ns);
+  float3 wo_l = frame_to_local(&frame, wo);
+
+  // Next-event estimation: the base samples a light point; offsets reconnect to the same point.
+  if (s.light_count > 0 && !bsdf_is_delta(&b)) {
+    float4 ul = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_LIGHT(base.depth));
+    int light = light_select(&s, ul.x);
+    LightSample ls;
+    int usable = light_sample(&s, light, su.p, ul.yz, &ls);
+    float3 wi_l = usable ? frame_to_local(&frame, ls.wi) : (float3)(0.0f);
+    // A light sample the base cannot use (shading and geometric normals disagree) is no sample
+    // at all, also for its offsets: the neighbour's base rejects the mirrored case the same way,
+    // which keeps the pairwise weights summing to one.
+    if (usable && dot(ls.wi, su.ng) * wi_l.z > 0.0f) {
+      float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
+      float3 c_base = beta * f_le;
+      float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
+      int base_ray_needed = 0;
+      for (int k = 0; k < GPT_OFFSETS; ++k) {
+        float w = gpt_weight(p_light, p_b, 0.0f, 0.0f, 0.0f);
+        float3 c_off = (float3)(0.0f);
+        int own_ray = 0;
+        if (o[k].mode == GPT_MODE_JOINED) {
+          w = gpt_weight(p_light, p_b, o[k].ratio, p_light, p_b);
+          c_off = vload3(0, o[k].throughput) * f_le;
+        } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
+          float3 wr = frame_to_local(&frame, wo_off[k]);
+          float q_b = ls.delta ? 0.0f : bsdf_pdf(&b, wr, wi_l);
+          w = gpt_weight(p_light, p_b, o[k].ratio, p_light, q_b);
+          c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf;
+        } else if (o[k].mode == GPT_MODE_TRACE) {
+          Bsdf bo = surface_bsdf(&s, &so[k]);
+          LightSample lo = ls;
+          if (!bsdf_is_delta(&bo) && light_connect(&s, light, so[k].p, &lo)) {
+            Frame fo = frame_from_normal(so[k].ns);
+            float3 wol = frame_to_local(&fo, wo_off[k]), wil = frame_to_local(&fo, lo.wi);
+            if (dot(lo.wi, so[k].ng) * wil.z > 0.0f) {
+              float q_b = lo.delta ? 0.0f : bsdf_pdf(&bo, wol, wil);
+              float jac = 1.0f;
+              if (!lo.delta && !isinf(lo.dist)) jac = reconnect_jacobian(su.p, so[k].p, so[k].p + lo.wi * lo.dist, lo.light_normal);
+              w = gpt_weight(p_light, p_b, o[k].ratio, p_light, jac * q_b);
+              c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf;
+              own_ray = c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f;
+              if (own_ray) {
+                c_off = checked(w * c_off, counters);
+                pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
+                uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+                write_light_ray(&shadow_rays[r], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
+              }
+            }
+          }
+        }
+        float3 cb = checked(w * c_base, counters);
+        pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
+        base_ray_needed |= cb.x > 0.0f || cb.y > 0.0f || cb.z > 0.0f;
+        if (!own_ray && (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT)) {
+          float3 co = checked(w * c_off, counters);
+          pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
+          base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
+        }
+      }
+      if (base_ray_needed) {
+        uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+        write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
+      }
+    }
+  }
+
+  // The base's BSDF sample; Russian roulette is decided by the base.
+  float4 ub = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth));
+  BsdfSample bs;
+  int alive = bsdf_sample(&b, wo_l, ub.xyz, &bs);
+  float3 wi = alive ? frame_to_world(&frame, bs.wi) : wo;
+  alive = alive && dot(wi, su.ng) * bs.wi.z > 0.0f;
+  if (alive) {
+    beta *= bs.weight;
+    alive = is_finite3(beta) && max3(beta) > 0.0f;
+  }
+  float rr = 1.0f;
+  if (alive && base.depth + 1 >= params.path.rr_depth) {
+    rr = fmin(max3(beta), 0.95f);
+    alive = ub.w < rr;
+  }
+  if (!alive) {
+    for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
+    return;
+  }
+  beta /= rr;
+
+  // Offsets that share this vertex follow the base's sample directly.
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (o[k].mode != GPT_MODE_JOINED && o[k].mode != GPT_MODE_JOINED_RECENT) continue;
+    float3 t = vload3(0, o[k].throughput);
+    if (o[k].mode == GPT_MODE_JOINED) {
+      t *= bs.weight;
+      o[k].last_pdf = bs.pdf;
+    } else {
+      float3 wr = frame_to_local(&frame, wo_off[k]);
+      float3 f = bsdf_eval(&b, wr, bs.wi);
+      float p = bsdf_pdf(&b, wr, bs.wi);
+      if (bs.delta || !(p > 0.0f) || max3(f) <= 0.0f) {
+        kill_offset(&o[k], counters, GPT_COUNTER_FAIL_ZERO);
+        continue;
+      }
+      t *= f / bs.pdf;
+      o[k].ratio *= p / bs.pdf;
+      o[k].last_pdf = p;
+      o[k].mode = GPT_MODE_JOINED;
+    }
+    o[k].last_delta = bs.delta;
+    if (rr < 1.0f) {
+      // The offset's own-base Russian roulette would have used its own throughput.
+      o[k].ratio *= fmin(max3(t / o[k].ratio), 0.95f) / rr;
+      t /= rr;
+    }
+    if (!is_finite3(t) || !isfinite(o[k].ratio)) {
+      kill_offset(&o[k], counters, GPT_COUNTER_FAIL_NONFINITE);
+      continue;
+    }
+    vstore3(t, 0, o[k].throughput);
+  }
+  for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
+
+  base.depth += 1;
+  base.bsdf_pdf = bs.pdf;
+  base.flags = bs.delta ? PATH_FLAG_SPECULAR : 0;
+  vstore3(beta, 0, base.throughput);
+  base.prim = rh.hit.primID;
+  base.b1 = rh.hit.u;
+  base.b2 = rh.hit.v;
+  base.sample_delta = bs.delta;
+  base.sample_transmitted = bs.transmitted;
+  base.sample_eta = bs.eta;
+  vstore3(wi, 0, base.wi);
+  vstore3(wo, 0, base.wo);
+  base.rr_prob = rr;
+  bases[g] = base;
+  uint slot = atomic_inc(&counters[GPT_COUNTER_BASE_RAYS]);
+  write_ray_hit(&base_out[slot], offset_ray_origin(su.p, dot(wi, su.ng) > 0.0f ? su.ng : -su.ng), wi, 0.0f, INFINITY, g);
+}
+
+// Adds the next-event contributions whose shadow rays Embree found unoccluded.
+__kernel void gpt_shadow(uint count, __global const GdrRay* shadow_rays, __global const float4* pend,
+                         __global const GptBaseState* bases, __global float4* acc) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  GdrRay r = shadow_rays[i];
+  if (r.tfar < 0.0f) return;
+  uint g = r.id / 8u, kind = r.id % 8u;
+  uint pixel = bases[g].pixel;
+  // The base's ray (kind 0) and offset k's own ray both add to ACC_OFFSET(k) without atomics:
+  // safe because an offset is either joined (its share rides on the base's ray, PEND_JOINED) or
+  // traced (its own ray, PEND_OWN), never both, and acc_add skips the zero entries.
+  if (kind == 0u) {
+    for (int k = 0; k < GPT_OFFSETS; ++k) {
+      acc_add(acc, pixel, GPT_ACC_BASE(k), pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)].xyz);
+      acc_add(acc, pixel, GPT_ACC_OFFSET(k), pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)].xyz);
+    }
+  } else {
+    int k = (int)kind - 1;
+    acc_add(acc, pixel, GPT_ACC_OFFSET(k), pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)].xyz);
+  }
+}
