@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "shared/color.h"
+
 namespace gdr {
 namespace {
 
@@ -34,7 +36,7 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
       std::vector<double> weight(w);
       for (int c = 0; c < w; ++c) {
         const Vec4& texel = scene.texels[size_t(t.offset) + size_t(r) * w + c];
-        double lum = 0.212671 * texel.x + 0.715160 * texel.y + 0.072169 * texel.z;
+        double lum = gdr_luminance(texel.x, texel.y, texel.z);
         weight[c] = std::isfinite(lum) && lum > 0 ? lum * sin_theta : 0.0;
         row_weight[r] += weight[c];
       }

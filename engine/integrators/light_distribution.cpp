@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "scene/scene.h"
+#include "shared/color.h"
 
 namespace gdr {
 namespace {
-
-float luminance(const float* c) { return 0.212671f * c[0] + 0.715160f * c[1] + 0.072169f * c[2]; }
 
 float triangle_area(const Scene& s, int t) {
   const GdrTriangle& tri = s.triangles[t];
@@ -22,7 +21,7 @@ float triangle_area(const Scene& s, int t) {
 float light_power(const Scene& s, const GdrLight& l) {
   constexpr float pi = 3.14159265f;
   float radius = l.scene_radius > 0 ? l.scene_radius : 1.0f;
-  float lum = luminance(l.radiance);
+  float lum = gdr_luminance(l.radiance[0], l.radiance[1], l.radiance[2]);
   switch (l.type) {
     case LIGHT_AREA: return pi * lum * triangle_area(s, l.triangle);
     case LIGHT_POINT: return 4 * pi * lum;

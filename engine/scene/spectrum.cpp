@@ -1,4 +1,5 @@
 #include "scene/spectrum.h"
+#include "shared/color.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +91,7 @@ Rgb blackbody_to_rgb(double kelvin) {
     return 2 * h * c * c / (std::pow(l, 5) * (e - 1));
   };
   Rgb rgb = integrate_rgb(planck, SpectrumUse::Emission);
-  double y = 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
+  double y = gdr_luminance(rgb.r, rgb.g, rgb.b);
   float s = y > 0 && std::isfinite(y) ? static_cast<float>(1.0 / y) : 0.0f;
   return {rgb.r * s, rgb.g * s, rgb.b * s};
 }
