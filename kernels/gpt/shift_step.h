@@ -26,6 +26,14 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
   int next_hit = rh.hit.geomID != GDR_INVALID_ID;
   float4 ub = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth - 1));
   float thr = params.shift_threshold;
+  // The base's next vertex, shared by the four offsets' reconnection decisions.
+  Surface sn = sx;
+  int diffuse_next = 0;
+  if (next_hit) {
+    sn = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+    Bsdf bn = surface_bsdf(&s, &sn);
+    diffuse_next = is_diffuse(&bn, thr);
+  }
 
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     __global GptOffsetState* og = &offsets[g * GPT_OFFSETS + k];
@@ -67,13 +75,6 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
       }
     } else {
       int diffuse_pair = is_diffuse(&bx, thr) && is_diffuse(&by, thr);
-      Surface sn;
-      int diffuse_next = 0;
-      if (next_hit && diffuse_pair) {
-        sn = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
-        Bsdf bn = surface_bsdf(&s, &sn);
-        diffuse_next = is_diffuse(&bn, thr);
-      }
       float3 wiy;
       float jac = 1.0f;
       int ok = 1;
@@ -135,7 +136,6 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     if (reconnect) {
       o.mode = GPT_MODE_RECONNECTING;
       o.visible = 0;
-      Surface sn = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
       uint r = atomic_inc(&counters[GPT_COUNTER_RECONNECT_RAYS]);
       write_segment_ray(&reconnect_rays[r], sy.p, sy.ng, sn.p, id);
     } else {
