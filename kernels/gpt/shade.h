@@ -6,6 +6,21 @@
 #include "gpt/shift.h"
 #include "light/lights.h"
 
+// Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
+// and the offset's le_off (with q_off, the offset's own light-sampling pdf for that emitter),
+// weighted among the pair's four techniques. A dead offset leaves plain path-tracing MIS.
+inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const GptOffsetState* o, float p_bsdf,
+                              float p_light, float3 c_base, float3 le_off, float q_off, __global uint* counters) {
+  float w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
+  float3 c_off = (float3)(0.0f);
+  if (offset_alive(o)) {
+    w = gpt_weight(p_bsdf, p_light, o->ratio * safe_div(p_bsdf, o->last_pdf), o->last_pdf, q_off);
+    c_off = vload3(0, o->throughput) * le_off;
+  }
+  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w * c_base, counters));
+  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
+}
+
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
                         __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
                         __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
@@ -48,20 +63,11 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       } else {
         float p_light = last_specular ? 0.0f : environment_pdf(&s, dir);
         for (int k = 0; k < GPT_OFFSETS; ++k) {
-          float w;
-          float3 c_off = (float3)(0.0f);
-          if (!offset_alive(&o[k])) {
-            w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
-          } else {
-            // A traced offset escaped along its own direction; a joined one along the base's.
-            float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
-            float p_off = o[k].last_pdf;
-            float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, d_off);
-            w = gpt_weight(p_bsdf, p_light, o[k].ratio * safe_div(p_bsdf, p_off), p_off, q_off);
-            c_off = vload3(0, o[k].throughput) * environment_radiance(&s, env, d_off);
-          }
-          acc_add(acc, base.pixel, GPT_ACC_BASE(k), checked(w * beta * le, counters));
-          acc_add(acc, base.pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
+          // A traced offset escaped along its own direction; a joined one along the base's.
+          float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
+          float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, d_off);
+          add_bsdf_emission(acc, base.pixel, k, &o[k], p_bsdf, p_light, beta * le,
+                            environment_radiance(&s, env, d_off), q_off, counters);
         }
       }
     }
@@ -94,28 +100,16 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     } else {
       float p_light = (last_specular || su.light < 0) ? 0.0f : area_pdf(&s, su.light, su.area, rh.ray.tfar, dot(su.ng, wo));
       for (int k = 0; k < GPT_OFFSETS; ++k) {
-        float w;
-        float3 c_off = (float3)(0.0f);
-        if (!offset_alive(&o[k])) {
-          w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
-        } else {
-          float3 le_off = (float3)(0.0f);
-          float q_off = 0.0f;
-          if (so[k].light >= 0) {
-            float dist = o[k].mode == GPT_MODE_TRACE          ? o[k].t
-                         : o[k].mode == GPT_MODE_JOINED_RECENT ? length(vload3(0, o[k].prev_pos) - su.p)
-                                                               : rh.ray.tfar;
-            le_off = area_radiance(&s, so[k].light, so[k].ng, wo_off[k]);
-            if (!o[k].last_delta) q_off = area_pdf(&s, so[k].light, so[k].area, dist, dot(so[k].ng, wo_off[k]));
-          }
-          float p_off = o[k].last_pdf;
-          w = gpt_weight(p_bsdf, p_light, o[k].ratio * safe_div(p_bsdf, p_off), p_off, q_off);
-          c_off = vload3(0, o[k].throughput) * le_off;
+        float3 le_off = (float3)(0.0f);
+        float q_off = 0.0f;
+        if (offset_alive(&o[k]) && so[k].light >= 0) {
+          float dist = o[k].mode == GPT_MODE_TRACE          ? o[k].t
+                       : o[k].mode == GPT_MODE_JOINED_RECENT ? length(vload3(0, o[k].prev_pos) - su.p)
+                                                             : rh.ray.tfar;
+          le_off = area_radiance(&s, so[k].light, so[k].ng, wo_off[k]);
+          if (!o[k].last_delta) q_off = area_pdf(&s, so[k].light, so[k].area, dist, dot(so[k].ng, wo_off[k]));
         }
-        if (su.light >= 0 || c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f) {
-          acc_add(acc, base.pixel, GPT_ACC_BASE(k), checked(w * beta * le, counters));
-          acc_add(acc, base.pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
-        }
+        add_bsdf_emission(acc, base.pixel, k, &o[k], p_bsdf, p_light, beta * le, le_off, q_off, counters);
       }
     }
   }
