@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "accel/embree_scene.h"
-#include "integrators/device_scene.h"
 #include "integrators/pt/path_tracer.h"
 #include "scene/load_scene.h"
 #include "support/devices.h"
@@ -17,22 +16,14 @@
 namespace gdr {
 namespace {
 
-// One pass of the path tracer's host loop, kept bounce by bounce: the same kernels, buffers and
-// argument order as integrators/pt/path_tracer.cpp.
+// A PathTracer on its first pass, with snapshots of its queues at bounces 0 and 1, so each
+// benchmark can restore its inputs (untimed) and time one stage exactly as renders run it.
 struct PtBench {
   Scene scene;
   std::unique_ptr<EmbreeScene> embree;
-  std::unique_ptr<DeviceScene> device_scene;
-  Kernel generate, shade, shadow;
+  std::unique_ptr<PathTracer> tracer;
   uint32_t pixels;
   GdrPtParams params{};
-  Buffer<GdrRayHit> rays[2];
-  Buffer<cl_uint> queue[2];
-  Buffer<GdrPathState> paths;
-  Buffer<GdrRay> shadow_rays;
-  Buffer<Vec4> shadow_values;
-  Buffer<cl_uint> counters;
-  Buffer<Vec4> film;
 
   // Snapshots of the queues and path states at bounce 0 and 1 (before intersection).
   std::vector<GdrRayHit> queue_rays[2], queue_hits[2];
@@ -42,55 +33,39 @@ struct PtBench {
   std::vector<GdrRay> shadow_occluded;
   cl_uint active[2] = {0, 0}, shadows = 0;
 
-  static Kernel make(Context& ctx, const Scene& s, const char* name) {
-    return ctx.program("pt/pt.cl", scene_kernel_defines(s))->kernel(name);
-  }
-
   explicit PtBench(Context& ctx)
       : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
-        device_scene(std::make_unique<DeviceScene>(ctx, scene)),
-        generate(make(ctx, scene, "pt_generate")),
-        shade(make(ctx, scene, "pt_shade")),
-        shadow(make(ctx, scene, "pt_shadow")),
-        pixels(uint32_t(scene.camera.width) * scene.camera.height),
-        rays{Buffer<GdrRayHit>(ctx, pixels, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
-             Buffer<GdrRayHit>(ctx, pixels, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR)},
-        queue{Buffer<cl_uint>(ctx, pixels), Buffer<cl_uint>(ctx, pixels)},
-        paths(ctx, pixels),
-        shadow_rays(ctx, pixels, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
-        shadow_values(ctx, pixels),
-        counters(ctx, PT_COUNTER_COUNT),
-        film(ctx, pixels) {
+        tracer(std::make_unique<PathTracer>(ctx, scene, *embree)),
+        pixels(uint32_t(scene.camera.width) * scene.camera.height) {
     RenderSettings settings;
     settings.seed = 1;
     settings.max_depth = scene.max_depth;
-    params = device_scene->path_params(settings, 0, 0, pixels);
-    film.fill(Vec4{});
-    run_generate();
+    params = tracer->params(settings, 0, 0, pixels);
+    tracer->generate(params);
     active[0] = pixels;
     for (int depth = 0; depth < 2; ++depth) {
-      queue_rays[depth] = rays[depth].read();
-      queue_rays[depth].resize(active[depth]);
-      queue_slots[depth] = queue[depth].read();
-      queue_paths[depth] = paths.read();
-      intersect(depth);
-      queue_hits[depth] = rays[depth].read();
-      queue_hits[depth].resize(active[depth]);
-      std::vector<cl_uint> c = run_shade(depth);
+      queue_rays[depth] = snapshot(tracer->rays(depth), active[depth]);
+      queue_slots[depth] = tracer->queue(depth).read();
+      queue_paths[depth] = tracer->paths().read();
+      tracer->intersect(depth, active[depth], depth == 0);
+      queue_hits[depth] = snapshot(tracer->rays(depth), active[depth]);
+      std::vector<cl_uint> c = tracer->shade(params, depth, active[depth]);
       if (depth == 0) {
         shadows = c[PT_COUNTER_SHADOW_RAYS];
-        shadow_queue = shadow_rays.read();
-        shadow_queue.resize(shadows);
-        {
-          auto m = shadow_rays.map(shadows);
-          embree->occluded(m.data(), shadows, "shadow");
-        }
-        shadow_occluded = shadow_rays.read();
-        shadow_occluded.resize(shadows);
+        shadow_queue = snapshot(tracer->shadow_rays(), shadows);
+        tracer->occlude(shadows);
+        shadow_occluded = snapshot(tracer->shadow_rays(), shadows);
+        active[1] = c[PT_COUNTER_NEXT_RAYS];
       }
-      if (depth == 0) active[1] = c[PT_COUNTER_NEXT_RAYS];
     }
+  }
+
+  template <class T>
+  static std::vector<T> snapshot(const Buffer<T>& b, size_t count) {
+    std::vector<T> v = b.read();
+    v.resize(count);
+    return v;
   }
 
   static Scene load(const std::string& path) {
@@ -99,28 +74,12 @@ struct PtBench {
     return load_scene(path, o);
   }
 
-  void run_generate() { generate.args(device_scene->camera(), params, rays[0], queue[0], paths).run(pixels); }
-
-  void intersect(int depth) {
-    auto m = rays[depth].map(active[depth]);
-    embree->intersect(m.data(), active[depth], depth == 0, depth == 0 ? "camera" : "bounce");
-  }
-
-  std::vector<cl_uint> run_shade(int depth) {
-    counters.fill(0u);
-    shade.args(params, active[depth], rays[depth], queue[depth], rays[1 - depth], queue[1 - depth], shadow_rays,
-               shadow_values, paths, film, counters);
-    device_scene->set_args(shade, 11);
-    shade.run(active[depth]);
-    return counters.read();
-  }
-
   // Puts back the queue of `depth` as it was before (hits: after) intersection.
   void restore(int depth, bool with_hits) {
     const auto& r = with_hits ? queue_hits[depth] : queue_rays[depth];
-    rays[depth].write(r.data(), r.size());
-    queue[depth].write(queue_slots[depth].data(), active[depth]);
-    paths.write(queue_paths[depth]);
+    tracer->rays(depth).write(r.data(), r.size());
+    tracer->queue(depth).write(queue_slots[depth].data(), active[depth]);
+    tracer->paths().write(queue_paths[depth]);
   }
 };
 
@@ -135,7 +94,7 @@ void label(benchmark::State& state, const char* what) {
 
 void BM_PtGenerate(benchmark::State& state) {
   PtBench& b = bench();
-  for (auto _ : state) b.run_generate();
+  for (auto _ : state) b.tracer->generate(b.params);
   state.SetItemsProcessed(int64_t(state.iterations()) * b.pixels);
   label(state, "camera paths");
 }
@@ -149,7 +108,7 @@ void BM_PtEmbreeIntersect(benchmark::State& state) {
     state.PauseTiming();
     b.restore(depth, false);
     state.ResumeTiming();
-    b.intersect(depth);
+    b.tracer->intersect(depth, b.active[depth], depth == 0);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.active[depth]);
   label(state, depth == 0 ? "camera rays" : "bounce rays");
@@ -163,12 +122,8 @@ void BM_PtShade(benchmark::State& state) {
   for (auto _ : state) {
     state.PauseTiming();
     b.restore(depth, true);
-    b.counters.fill(0u);
     state.ResumeTiming();
-    b.shade.args(b.params, b.active[depth], b.rays[depth], b.queue[depth], b.rays[1 - depth], b.queue[1 - depth],
-                 b.shadow_rays, b.shadow_values, b.paths, b.film, b.counters);
-    b.device_scene->set_args(b.shade, 11);
-    b.shade.run(b.active[depth]);
+    b.tracer->shade(b.params, depth, b.active[depth]);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.active[depth]);
   label(state, depth == 0 ? "camera-hit paths" : "bounce-hit paths");
@@ -180,10 +135,9 @@ void BM_PtEmbreeOccluded(benchmark::State& state) {
   PtBench& b = bench();
   for (auto _ : state) {
     state.PauseTiming();
-    b.shadow_rays.write(b.shadow_queue.data(), b.shadow_queue.size());
+    b.tracer->shadow_rays().write(b.shadow_queue.data(), b.shadow_queue.size());
     state.ResumeTiming();
-    auto m = b.shadow_rays.map(b.shadows);
-    b.embree->occluded(m.data(), b.shadows, "shadow");
+    b.tracer->occlude(b.shadows);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.shadows);
   label(state, "shadow rays");
@@ -193,8 +147,8 @@ BENCHMARK(BM_PtEmbreeOccluded)->Unit(benchmark::kMillisecond)->UseRealTime();
 // pt_shadow on the occlusion results of the first shadow-ray queue.
 void BM_PtShadow(benchmark::State& state) {
   PtBench& b = bench();
-  b.shadow_rays.write(b.shadow_occluded.data(), b.shadow_occluded.size());
-  for (auto _ : state) b.shadow.args(b.shadows, b.shadow_rays, b.shadow_values, b.film).run(b.shadows);
+  b.tracer->shadow_rays().write(b.shadow_occluded.data(), b.shadow_occluded.size());
+  for (auto _ : state) b.tracer->add_shadows(b.shadows);
   state.SetItemsProcessed(int64_t(state.iterations()) * b.shadows);
   label(state, "shadow rays");
 }

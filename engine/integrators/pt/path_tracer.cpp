@@ -40,37 +40,52 @@ PathTracer::PathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree)
       aux_normal_(ctx, film_.size()),
       aux_depth_(ctx, film_.size()) {}
 
+void PathTracer::generate(const GdrPtParams& params) {
+  generate_.args(device_scene_.camera(), params, rays_[0], queue_[0], paths_).run(params.pixel_count);
+}
+
+void PathTracer::intersect(int cur, cl_uint active, bool camera) {
+  auto rays = rays_[cur].map(active);
+  embree_.intersect(rays.data(), active, camera, camera ? "camera" : "bounce");
+}
+
+std::vector<cl_uint> PathTracer::shade(const GdrPtParams& params, int cur, cl_uint active) {
+  counters_.fill(0u);
+  shade_.args(params, active, rays_[cur], queue_[cur], rays_[1 - cur], queue_[1 - cur], shadow_rays_, shadow_values_,
+              paths_, film_, counters_);
+  device_scene_.set_args(shade_, 11);
+  shade_.run(active);
+  return counters_.read();
+}
+
+void PathTracer::occlude(cl_uint shadows) {
+  auto rays = shadow_rays_.map(shadows);
+  embree_.occluded(rays.data(), shadows, "shadow");
+}
+
+void PathTracer::add_shadows(cl_uint shadows) {
+  shadow_.args(shadows, shadow_rays_, shadow_values_, film_).run(shadows);
+}
+
 void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
   Stats* stats = ctx_.stats();
-  GdrPtParams params = device_scene_.path_params(settings, sample, first, count);
-
-  generate_.args(device_scene_.camera(), params, rays_[0], queue_[0], paths_).run(count);
+  GdrPtParams p = params(settings, sample, first, count);
+  generate(p);
   cl_uint active = count;
   int cur = 0;
   for (int depth = 0; active > 0; ++depth) {
-    {
-      auto rays = rays_[cur].map(active);
-      embree_.intersect(rays.data(), active, depth == 0, depth == 0 ? "camera" : "bounce");
-    }
+    intersect(cur, active, depth == 0);
     if (depth == 0 && settings.aux) {
-      aux_.args(params, active, rays_[cur], aux_albedo_, aux_normal_, aux_depth_);
+      aux_.args(p, active, rays_[cur], aux_albedo_, aux_normal_, aux_depth_);
       device_scene_.set_args(aux_, 6);
       aux_.run(active);
     }
-    counters_.fill(0u);
-    shade_.args(params, active, rays_[cur], queue_[cur], rays_[1 - cur], queue_[1 - cur], shadow_rays_,
-                shadow_values_, paths_, film_, counters_);
-    device_scene_.set_args(shade_, 11);
-    shade_.run(active);
-    std::vector<cl_uint> counters = counters_.read();
+    std::vector<cl_uint> counters = shade(p, cur, active);
     cl_uint shadows = counters[PT_COUNTER_SHADOW_RAYS];
     if (stats && counters[PT_COUNTER_NONFINITE]) stats->add_count("samples/nonfinite_rejected", counters[PT_COUNTER_NONFINITE]);
     if (shadows > 0) {
-      {
-        auto rays = shadow_rays_.map(shadows);
-        embree_.occluded(rays.data(), shadows, "shadow");
-      }
-      shadow_.args(shadows, shadow_rays_, shadow_values_, film_).run(shadows);
+      occlude(shadows);
+      add_shadows(shadows);
     }
     active = counters[PT_COUNTER_NEXT_RAYS];
     cur = 1 - cur;

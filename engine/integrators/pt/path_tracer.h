@@ -19,6 +19,21 @@ class PathTracer {
 
   RenderResult render(const RenderSettings& settings);
 
+  // The stages of one chunk, in the order trace_chunk runs them; public so that the kernel
+  // benchmarks time exactly what a render runs. Queue `cur` is read, queue 1 - cur written.
+  GdrPtParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const {
+    return device_scene_.path_params(settings, sample, first, count);
+  }
+  void generate(const GdrPtParams& params);  // camera rays into queue 0
+  void intersect(int cur, cl_uint active, bool camera);
+  std::vector<cl_uint> shade(const GdrPtParams& params, int cur, cl_uint active);  // PT_COUNTER_*
+  void occlude(cl_uint shadows);
+  void add_shadows(cl_uint shadows);
+  Buffer<GdrRayHit>& rays(int cur) { return rays_[cur]; }
+  Buffer<cl_uint>& queue(int cur) { return queue_[cur]; }
+  Buffer<GdrPathState>& paths() { return paths_; }
+  Buffer<GdrRay>& shadow_rays() { return shadow_rays_; }
+
  private:
   // Traces one sample for pixels [first, first + count) and adds the radiance into film_.
   void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
