@@ -161,9 +161,10 @@ void Kernel::run_2d(size_t width, size_t height, size_t local_x, size_t local_y)
 }
 
 void Kernel::launch(cl_uint dims, const size_t* global, const size_t* local, size_t items) {
-  if (context_->stats() && !context_->stats()->has("startup/first_kernel_launch_seconds")) {
+  if (!context_->launched_) {
+    context_->launched_ = true;
     // From process start to here: runtime set-up, scene load, BVH and kernel builds.
-    context_->stats()->set("startup/first_kernel_launch_seconds", seconds_since_process_start());
+    if (context_->stats()) context_->stats()->set("startup/first_kernel_launch_seconds", seconds_since_process_start());
   }
   if (context_->deferred_) {
     // Without stats no event is needed at all.

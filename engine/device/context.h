@@ -66,6 +66,7 @@ class Context {
   };
   void collect_timings() const;
   bool deferred_ = false;
+  bool launched_ = false;  // a kernel has run (start-up time recorded)
   mutable std::vector<Pending> pending_;
 };
 

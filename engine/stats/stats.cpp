@@ -34,11 +34,6 @@ void Stats::set(const std::string& key, nlohmann::json value) {
   values_[key] = std::move(value);
 }
 
-bool Stats::has(const std::string& key) const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return values_.count(key) > 0;
-}
-
 double Stats::seconds(const std::string& key) const {
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = timers_.find(key);

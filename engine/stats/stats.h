@@ -19,7 +19,6 @@ class Stats {
   // Settings and results that are not sums (seed, device name, final residual...).
   void set(const std::string& key, nlohmann::json value);
 
-  bool has(const std::string& key) const;
   double seconds(const std::string& key) const;
   uint64_t count(const std::string& key) const;
   nlohmann::json to_json() const;
