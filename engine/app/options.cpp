@@ -8,16 +8,22 @@
 namespace gdr {
 namespace {
 
-// CLI11's PositiveNumber lets "nan" and "inf" through (nan <= 0 is false): a --time of nan or
-// inf would render for ever.
-const CLI::Validator kFinitePositive(
-    [](std::string& s) -> std::string {
-      double v = 0;
-      if (!CLI::detail::lexical_cast(s, v)) return "Value " + s + " is not a number";
-      if (!std::isfinite(v) || v <= 0) return "Value " + s + " is not a finite positive number";
-      return {};
-    },
-    "POSITIVE");
+// CLI11's PositiveNumber and NonNegativeNumber let "nan" and "inf" through (nan <= 0 is false):
+// a --time of nan or inf would render for ever. Their messages also print DBL_MAX in full.
+CLI::Validator finite_number(bool allow_zero) {
+  return CLI::Validator(
+      [allow_zero](std::string& s) -> std::string {
+        double v = 0;
+        if (!CLI::detail::lexical_cast(s, v)) return "Value " + s + " is not a number";
+        if (!std::isfinite(v) || v < 0 || (v == 0 && !allow_zero)) {
+          return "Value " + s + (allow_zero ? " is not a finite number >= 0" : " is not a finite positive number");
+        }
+        return {};
+      },
+      allow_zero ? "NONNEGATIVE" : "POSITIVE");
+}
+const CLI::Validator kFinitePositive = finite_number(false);
+const CLI::Validator kFiniteNonNegative = finite_number(true);
 
 }  // namespace
 
@@ -37,7 +43,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--error-image", o.error_image, "With --compare: write a false-colour relMSE image (PNG)");
   app.add_option("-o,--output", o.output, "Output image (.exr; a tone-mapped .png is written beside it)");
   app.add_option("--integrator", o.integrator, "pt | gpt (default: the scene's integrator, else pt)");
-  app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::PositiveNumber);
+  app.add_option("--spp", o.spp, "Samples per pixel")->check(kFinitePositive);
   app.add_option("--time", o.time_budget, "Render for this many seconds")->check(kFinitePositive);
   app.add_option("--seed", o.seed, "Random seed");
   std::vector<std::string> defines;
@@ -46,7 +52,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                  "OpenCL device: index, cpu, gpu, or part of its name (default: $GDR_DEVICE, else first GPU, else CPU)");
   app.add_option("--stats", o.stats_path, "Write timers and counters to this JSON file");
   app.add_option("--threads", o.threads, "Host and CPU-device threads (default: the usable CPUs)")
-      ->check(CLI::PositiveNumber);
+      ->check(kFinitePositive);
   app.add_flag("--aux", o.aux, "Also write albedo, normal and depth layers (first hit; pt)");
   app.add_flag("--strict", o.strict, "Unsupported scene features are errors instead of warnings");
   app.add_option("--filter", o.filter, "Pixel filter: box | tent | gaussian (default: the scene's)")
@@ -58,8 +64,9 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(CLI::IsMember({"mis", "bsdf", "light"}));
   app.add_option("--shift", o.shift, "Gradient-domain shift mapping: hybrid | replay")
       ->check(CLI::IsMember({"hybrid", "replay"}));
-  app.add_option("--shift-threshold", o.shift_threshold, "Roughness below which a vertex counts as glossy/specular")
-      ->check(CLI::NonNegativeNumber);
+  app.add_option("--shift-threshold", o.shift_threshold,
+                 "Roughness at or below which a vertex counts as glossy/specular (not reconnected)")
+      ->check(kFiniteNonNegative);
   app.add_option("--recon", o.recon, "Poisson reconstruction: l1 | l2 | none")
       ->check(CLI::IsMember({"l1", "l2", "none"}));
   app.add_option("--alpha", o.alpha, "Weight of the primal in the screened Poisson solve")
