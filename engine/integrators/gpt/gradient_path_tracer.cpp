@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "integrators/film.h"
 #include "integrators/progressive_loop.h"
 
 namespace gdr {
@@ -20,16 +21,6 @@ const char* kShiftCounterNames[GPT_COUNTER_COUNT] = {
 
 Kernel gpt_kernel(Context& ctx, const Scene& scene, const char* name) {
   return ctx.program("gpt/gpt.cl", scene_kernel_defines(scene))->kernel(name);
-}
-
-std::vector<float> to_rgb(const std::vector<Vec4>& v, float scale) {
-  std::vector<float> rgb(v.size() * 3);
-  for (size_t i = 0; i < v.size(); ++i) {
-    rgb[3 * i + 0] = v[i].x * scale;
-    rgb[3 * i + 1] = v[i].y * scale;
-    rgb[3 * i + 2] = v[i].z * scale;
-  }
-  return rgb;
 }
 
 }  // namespace
@@ -157,11 +148,11 @@ GradientImages GradientPathTracer::render(const RenderSettings& settings) {
   });
   out.seconds = timer.elapsed();
   float scale = out.samples > 0 ? 1.0f / out.samples : 0.0f;
-  out.primal = to_rgb(primal_.read(), scale);
-  out.dx = to_rgb(dx_.read(), scale);
-  out.dy = to_rgb(dy_.read(), scale);
-  out.direct = to_rgb(direct_.read(), scale);
-  std::vector<float> sq = to_rgb(primal_sq_.read(), scale);
+  out.primal = film_rgb(primal_, scale);
+  out.dx = film_rgb(dx_, scale);
+  out.dy = film_rgb(dy_, scale);
+  out.direct = film_rgb(direct_, scale);
+  std::vector<float> sq = film_rgb(primal_sq_, scale);
   out.variance.resize(sq.size());
   for (size_t i = 0; i < sq.size(); ++i) {
     // Variance of the mean over the passes (one sample each).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "integrators/film.h"
 #include "integrators/progressive_loop.h"
 #include "util/log.h"
 
@@ -109,26 +110,14 @@ RenderResult PathTracer::render(const RenderSettings& settings) {
     }
   });
   result.seconds = timer.elapsed();
-  std::vector<Vec4> film = film_.read();
-  std::vector<float> rgb(size_t(pixels) * 3);
   float scale = result.samples > 0 ? 1.0f / result.samples : 0.0f;
-  for (size_t p = 0; p < pixels; ++p) {
-    rgb[3 * p + 0] = film[p].x * scale;
-    rgb[3 * p + 1] = film[p].y * scale;
-    rgb[3 * p + 2] = film[p].z * scale;
-  }
   result.image = Image(scene_.camera.width, scene_.camera.height, {});
-  result.image.add_rgb_layer("", rgb);
+  result.image.add_rgb_layer("", film_rgb(film_, scale));
   if (settings.aux) {
-    std::vector<Vec4> albedo = aux_albedo_.read(), normal = aux_normal_.read();
-    std::vector<float> depth = aux_depth_.read(), a(size_t(pixels) * 3), n(size_t(pixels) * 3), d(size_t(pixels) * 3);
-    for (size_t p = 0; p < pixels; ++p) {
-      a[3 * p] = albedo[p].x * scale, a[3 * p + 1] = albedo[p].y * scale, a[3 * p + 2] = albedo[p].z * scale;
-      n[3 * p] = normal[p].x * scale, n[3 * p + 1] = normal[p].y * scale, n[3 * p + 2] = normal[p].z * scale;
-      d[3 * p] = d[3 * p + 1] = d[3 * p + 2] = depth[p] * scale;
-    }
-    result.image.add_rgb_layer("albedo", a);
-    result.image.add_rgb_layer("normal", n);
+    std::vector<float> depth = aux_depth_.read(), d(size_t(pixels) * 3);
+    for (size_t p = 0; p < pixels; ++p) d[3 * p] = d[3 * p + 1] = d[3 * p + 2] = depth[p] * scale;
+    result.image.add_rgb_layer("albedo", film_rgb(aux_albedo_, scale));
+    result.image.add_rgb_layer("normal", film_rgb(aux_normal_, scale));
     result.image.add_rgb_layer("depth", d);
   }
   if (stats) {
