@@ -1,6 +1,7 @@
 #include "scene/scene_features.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -19,11 +20,18 @@ const char* const kBsdfDefines[BSDF_TYPE_COUNT] = {"DIFFUSE",         "CONDUCTOR
 const char* const kLightNames[LIGHT_TYPE_COUNT] = {"area", "point", "spot", "directional", "constant", "envmap"};
 const char* const kLightDefines[LIGHT_TYPE_COUNT] = {"AREA", "POINT", "SPOT", "DIRECTIONAL", "CONSTANT", "ENVMAP"};
 
-bool is_delta_bsdf(int type) {
-  return type == BSDF_CONDUCTOR || type == BSDF_DIELECTRIC || type == BSDF_THIN_DIELECTRIC || type == BSDF_PLASTIC;
+// The same classification as the kernels' bsdf_is_delta / bsdf_has_delta_lobe / bsdf_roughness
+// (kernels/bsdf/bsdf.h): an index-matched rough dielectric passes light straight through.
+bool index_matched(const GdrMaterial& m) {
+  return m.type == BSDF_ROUGH_DIELECTRIC && std::fabs(m.eta[0] - 1.0f) < 1e-4f;
 }
-bool is_rough_bsdf(int type) {
-  return type == BSDF_ROUGH_CONDUCTOR || type == BSDF_ROUGH_DIELECTRIC || type == BSDF_ROUGH_PLASTIC;
+bool is_delta_bsdf(const GdrMaterial& m) {
+  return m.type == BSDF_CONDUCTOR || m.type == BSDF_DIELECTRIC || m.type == BSDF_THIN_DIELECTRIC ||
+         m.type == BSDF_PLASTIC || index_matched(m);
+}
+bool is_rough_bsdf(const GdrMaterial& m) {
+  return (m.type == BSDF_ROUGH_CONDUCTOR || m.type == BSDF_ROUGH_DIELECTRIC || m.type == BSDF_ROUGH_PLASTIC) &&
+         !index_matched(m);
 }
 
 // "3 materials: a, b, c" listing at most four names.
@@ -55,8 +63,8 @@ SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold)
     const GdrMaterial& m = scene.materials[i];
     if (m.type < 0 || m.type >= BSDF_TYPE_COUNT) continue;
     f.bsdf[m.type] = true;
-    if (is_delta_bsdf(m.type)) f.delta_surfaces = true;
-    if (is_rough_bsdf(m.type) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) f.near_delta_surfaces = true;
+    if (is_delta_bsdf(m)) f.delta_surfaces = true;
+    if (is_rough_bsdf(m) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) f.near_delta_surfaces = true;
     if (m.reflectance_texture >= 0) f.textures = true;
   }
   for (const GdrLight& l : scene.lights) {
@@ -71,8 +79,8 @@ SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold)
     if (!used[i]) continue;
     const GdrMaterial& m = scene.materials[i];
     std::string name = i < scene.material_names.size() ? scene.material_names[i] : std::to_string(i);
-    if (is_delta_bsdf(m.type)) f.delta_materials.push_back(name + " (" + bsdf_type_name(m.type) + ")");
-    if (is_rough_bsdf(m.type) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) {
+    if (is_delta_bsdf(m)) f.delta_materials.push_back(name + " (" + bsdf_type_name(m.type) + ")");
+    if (is_rough_bsdf(m) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) {
       std::ostringstream s;
       s << name << " (" << bsdf_type_name(m.type) << ", alpha " << std::min(m.alpha_u, m.alpha_v) << ")";
       f.near_delta_materials.push_back(s.str());
