@@ -5,24 +5,25 @@
 namespace gdr {
 
 CgSolver::CgSolver(Context& ctx, int width, int height)
-    : n_(width * height),
+    : grid_(width, height, recon_vector_width(ctx)),
       dots_(ctx),
-      r_(ctx, size_t(n_)),
-      p_(ctx, size_t(n_)),
-      q_(ctx, size_t(n_)),
+      r_(grid_.buffer(ctx)),
+      p_(grid_.buffer(ctx)),
+      q_(grid_.buffer(ctx)),
       apply_(recon_program(ctx, "recon/operator.cl")->kernel("recon_apply")),
       residual_(recon_program(ctx, "recon/operator.cl")->kernel("recon_residual")),
       update_xr_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_xr")),
       update_p_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_p")) {}
 
 SolveOutcome CgSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
-                                 bool relative_to_start) {
-  const int n = sys.pixels(), w = sys.width, h = sys.height;
+                             bool relative_to_start) {
+  const Planes& g = grid_;
   dots_.clear();
-  residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, w, h, r_).run(n);
-  dots_.dot(*sys.b, *sys.b, n, DeviceDots::kBB);
+  residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, g.ws, g.h, r_);
+  g.run(residual_);
+  dots_.dot(*sys.b, *sys.b, g, DeviceDots::kBB);
   int rr_old = DeviceDots::kRR, rr_new = DeviceDots::kRZ0;
-  dots_.dot(r_, r_, n, rr_old);
+  dots_.dot(r_, r_, g, rr_old);
   const cl_float4 rr0 = dots_.read(rr_old);
   const cl_float4 bb = dots_.read(DeviceDots::kBB);
   // Stopping is judged against |b|, or for a warm-started IRLS round against its first residual.
@@ -32,14 +33,18 @@ SolveOutcome CgSolver::solve(const LinearSystem& sys, int max_iterations, double
   if (relative_residual(rr0, ref, rr0) <= tolerance || max_iterations <= 0) return out;
 
   // p = r (beta = 0 / 0 -> 0; p is zeroed first so stale contents cannot leak in).
-  p_.fill(cl_float4{{0, 0, 0, 0}});
-  update_p_.args(p_, r_, dots_.scalars(), int(DeviceDots::kZero), int(DeviceDots::kZero), n).run(n);
+  p_.fill(0.0f);
+  update_p_.args(p_, r_, dots_.scalars(), int(DeviceDots::kZero), int(DeviceDots::kZero), g.ws, g.h);
+  g.run(update_p_);
   for (int it = 0; it < max_iterations; ++it) {
-    apply_.args(p_, *sys.wp, *sys.wx, *sys.wy, w, h, q_).run(n);
-    dots_.dot(p_, q_, n, DeviceDots::kPQ);
-    update_xr_.args(*sys.x, r_, p_, q_, dots_.scalars(), rr_old, int(DeviceDots::kPQ), n).run(n);
-    dots_.dot(r_, r_, n, rr_new);
-    update_p_.args(p_, r_, dots_.scalars(), rr_new, rr_old, n).run(n);
+    apply_.args(p_, *sys.wp, *sys.wx, *sys.wy, g.ws, g.h, q_);
+    g.run(apply_);
+    dots_.dot(p_, q_, g, DeviceDots::kPQ);
+    update_xr_.args(*sys.x, r_, p_, q_, dots_.scalars(), rr_old, int(DeviceDots::kPQ), g.ws, g.h);
+    g.run(update_xr_);
+    dots_.dot(r_, r_, g, rr_new);
+    update_p_.args(p_, r_, dots_.scalars(), rr_new, rr_old, g.ws, g.h);
+    g.run(update_p_);
     out.iterations = it + 1;
     const cl_float4 rr = dots_.read(rr_new);
     out.residual = relative_residual(rr, bb, rr0);

@@ -13,12 +13,11 @@ class CgSolver {
   // relative_to_start. The outcome's residual is always |r| / |b|.
   SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
                      bool relative_to_start = false);
-  DeviceDots& dots() { return dots_; }
 
  private:
-  int n_;
+  Planes grid_;
   DeviceDots dots_;
-  Vec4Buffer r_, p_, q_;
+  PlaneBuffer r_, p_, q_;
   Kernel apply_, residual_, update_xr_, update_p_;
 };
 

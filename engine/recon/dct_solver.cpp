@@ -51,8 +51,8 @@ DctSolver::DctSolver(Context& ctx, int width, int height)
       store_(recon_program(ctx, "recon/dct.cl")->kernel("dct_store")) {
   if (!supports(height)) throw Error("DctSolver: unsupported height " + std::to_string(height));
   for (int i = 0; i < 2; ++i) {
-    re_[i] = Vec4Buffer(ctx, size_t(width) * height);
-    im_[i] = Vec4Buffer(ctx, size_t(width) * height);
+    re_[i] = Buffer<cl_float4>(ctx, size_t(width) * height);
+    im_[i] = Buffer<cl_float4>(ctx, size_t(width) * height);
   }
   Kernel tw = recon_program(ctx, "recon/dct.cl")->kernel("dct_twiddles");
   tw.args(height, twiddles_).run(size_t(height));
@@ -73,14 +73,14 @@ int DctSolver::fft(int from, float sign) {
 }
 
 void DctSolver::solve(const LinearSystem& sys, float alpha) {
-  load_.args(*sys.b, w_, h_, re_[0], im_[0]).run_2d(size_t(w_), size_t(h_), 64, 1);
+  load_.args(*sys.b, w_, h_, sys.grid.ws, re_[0], im_[0]).run_2d(size_t(w_), size_t(h_), 64, 1);
   int f = fft(0, -1.0f);
   int other = 1 - f;
   // The tridiagonal solutions go to the free real plane, the inverse FFT's input back to f.
   rows_.args(re_[f], im_[f], w_, h_, alpha * alpha, re_[other]).run(size_t(h_));
   inverse_load_.args(re_[other], w_, h_, re_[f], im_[f]).run_2d(size_t(w_), size_t(h_), 64, 1);
   int g = fft(f, 1.0f);
-  store_.args(re_[g], w_, h_, *sys.x).run_2d(size_t(w_), size_t(h_), 64, 1);
+  store_.args(re_[g], w_, h_, sys.grid.ws, *sys.x).run_2d(size_t(w_), size_t(h_), 64, 1);
 }
 
 }  // namespace gdr

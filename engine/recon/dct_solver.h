@@ -26,7 +26,7 @@ class DctSolver {
   int w_, h_;
   std::vector<int> radices_;
   Buffer<cl_float2> twiddles_;
-  Vec4Buffer re_[2], im_[2];
+  Buffer<cl_float4> re_[2], im_[2];
   Kernel load_, stage2_, stage3_, stage4_, stage5_, stage_, rows_, inverse_load_, store_;
 };
 

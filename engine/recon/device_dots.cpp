@@ -5,31 +5,27 @@
 
 namespace gdr {
 
-std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file) {
-  Defines defines;
-  if (ctx.is_cpu()) defines["RECON_CONTIGUOUS"] = "";
-  return ctx.program(file, defines);
-}
-
 DeviceDots::DeviceDots(Context& ctx)
-    : partial_(ctx, kMaxGroups),
+    : partial_(ctx, 3 * kMaxGroups),
       scal_(ctx, kSlotCount),
       dot_(recon_program(ctx, "recon/reduce.cl")->kernel("recon_dot_partial")),
       final_(recon_program(ctx, "recon/reduce.cl")->kernel("recon_sum_final")) {
   clear();
 }
 
-int DeviceDots::groups(int n) {
-  return std::clamp((n + int(kLocal) - 1) / int(kLocal), 1, kMaxGroups);
+int DeviceDots::groups(const Planes& grid) {
+  return int(std::clamp<size_t>((grid.chunks() + kLocal - 1) / kLocal, 1, kMaxGroups));
 }
 
-void DeviceDots::dot(const Vec4Buffer& a, const Vec4Buffer& b, int n, int slot) {
-  dot_.args(a, b, n, partial_).run(reduce_global(n));
-  sum_partials(n, slot);
+void DeviceDots::dot(const PlaneBuffer& a, const PlaneBuffer& b, const Planes& grid, int slot) {
+  dot_.args(a, b, grid.ws, grid.h, partial_);
+  reduce(dot_, grid, slot);
 }
 
-void DeviceDots::sum_partials(int n, int slot) {
-  final_.args(partial_, groups(n), scal_, slot).run(kLocal);
+void DeviceDots::reduce(Kernel& k, const Planes& grid, int slot) {
+  const int g = groups(grid);
+  k.run_2d(size_t(g) * kLocal, 3, kLocal, 1);
+  final_.args(partial_, g, scal_, slot).run_2d(kLocal, 3, kLocal, 1);
 }
 
 cl_float4 DeviceDots::read(int slot) const {

@@ -1,14 +1,10 @@
-// Dot products and other reductions kept on the device: a work-group partial pass, then one group
-// writes the sum into a slot of a small scalar buffer that the CG kernels read in place.
+// Dot products and other reductions kept on the device: a work-group partial pass per channel,
+// then one group per channel writes the sum into its lane of a float4 slot of a small scalar
+// buffer that the CG kernels read in place.
 #pragma once
-#include "device/context.h"
+#include "recon/planes.h"
 
 namespace gdr {
-
-using Vec4Buffer = Buffer<cl_float4>;
-
-// Builds (once per context) a kernels/recon program with the defines for this device.
-std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file);
 
 class DeviceDots {
  public:
@@ -18,21 +14,21 @@ class DeviceDots {
 
   explicit DeviceDots(Context& ctx);
 
-  // scal[slot] = sum over i < n of a[i] * b[i], per channel.
-  void dot(const Vec4Buffer& a, const Vec4Buffer& b, int n, int slot);
-  // scal[slot] = sum of the partials a fused kernel wrote for `n` items.
-  void sum_partials(int n, int slot);
+  // scal[slot] = sum over the pixels of a * b, per channel.
+  void dot(const PlaneBuffer& a, const PlaneBuffer& b, const Planes& grid, int slot);
+  // Runs a kernel that reduces over `grid` into partial() (its arguments set), then sums the
+  // partials into scal[slot].
+  void reduce(Kernel& k, const Planes& grid, int slot);
   cl_float4 read(int slot) const;
   void clear();
 
-  // Global size for a kernel that reduces over n items into partial().
-  static size_t reduce_global(int n) { return size_t(groups(n)) * kLocal; }
-  static int groups(int n);
-  Vec4Buffer& partial() { return partial_; }
-  Vec4Buffer& scalars() { return scal_; }
+  PlaneBuffer& partial() { return partial_; }
+  Buffer<cl_float4>& scalars() { return scal_; }
 
  private:
-  Vec4Buffer partial_, scal_;
+  static int groups(const Planes& grid);
+  PlaneBuffer partial_;
+  Buffer<cl_float4> scal_;
   Kernel dot_, final_;
 };
 

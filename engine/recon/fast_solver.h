@@ -13,13 +13,13 @@ class FastSolver {
   void setup(const LinearSystem&) { mg_ready_ = false; }
   SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
                      bool relative_to_start = false);
-  DeviceDots& dots() { return dots_; }
 
  private:
+  Planes grid_;
   DeviceDots dots_;
   Multigrid mg_;
   bool mg_ready_ = false;
-  Vec4Buffer r_, p_, q_;
+  PlaneBuffer r_, p_, q_;
   Kernel apply_dot_, residual_, update_xr_dot_, update_p_;
 };
 

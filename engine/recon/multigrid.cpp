@@ -1,5 +1,6 @@
 #include "recon/multigrid.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace gdr {
@@ -9,37 +10,32 @@ constexpr int kCoarsestSweeps = 8;  // coarse levels are dominated by the screen
 constexpr int kCoarsestPixels = 64;
 }  // namespace
 
-Multigrid::Multigrid(Context& ctx, int width, int height)
-    : ctx_(ctx),
-      coarsen_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_coarsen")),
+Multigrid::Multigrid(Context& ctx, const Planes& fine)
+    : coarsen_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_coarsen")),
       diag_(recon_program(ctx, "recon/setup.cl")->kernel("recon_diag_inv")),
       jacobi_zero_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_jacobi_zero")),
       jacobi_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_jacobi")),
       restrict_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_restrict_presmoothed")),
       correct_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_correct")) {
-  int w = width, h = height;
+  Planes g = fine;
   for (;;) {
-    auto l = std::make_unique<Level>();
-    l->w = w;
-    l->h = h;
-    size_t n = size_t(w) * h;
+    auto l = std::make_unique<Level>(g);
     if (!levels_.empty()) {
-      l->own_wp = Vec4Buffer(ctx, n);
-      l->own_wx = Vec4Buffer(ctx, n);
-      l->own_wy = Vec4Buffer(ctx, n);
-      l->own_b = Vec4Buffer(ctx, n);
+      l->own_wp = g.buffer(ctx);
+      l->own_wx = g.buffer(ctx);
+      l->own_wy = g.buffer(ctx);
+      l->own_b = g.buffer(ctx);
       l->wp = &l->own_wp;
       l->wx = &l->own_wx;
       l->wy = &l->own_wy;
       l->b = &l->own_b;
     }
-    l->dinv = Vec4Buffer(ctx, n);
-    l->x = Vec4Buffer(ctx, n);
-    l->tmp = Vec4Buffer(ctx, n);
+    l->dinv = g.buffer(ctx);
+    l->x = g.buffer(ctx);
+    l->tmp = g.buffer(ctx);
     levels_.push_back(std::move(l));
-    if (int(n) <= kCoarsestPixels || (w == 1 && h == 1)) break;
-    w = (w + 1) / 2;
-    h = (h + 1) / 2;
+    if (g.w * g.h <= kCoarsestPixels || (g.w == 1 && g.h == 1)) break;
+    g = g.coarse();
   }
 }
 
@@ -50,22 +46,28 @@ void Multigrid::setup(const LinearSystem& sys) {
   fine.wy = sys.wy;
   for (size_t i = 0; i < levels_.size(); ++i) {
     Level& l = *levels_[i];
+    const Planes& g = l.grid;
     if (i > 0) {
-      Level& f = *levels_[i - 1];
-      coarsen_.args(*f.wp, *f.wx, *f.wy, f.w, f.h, *l.wp, *l.wx, *l.wy, l.w, l.h).run(l.n());
+      const Planes& f = levels_[i - 1]->grid;
+      Level& fl = *levels_[i - 1];
+      coarsen_.args(*fl.wp, *fl.wx, *fl.wy, f.ws, f.h, *l.wp, *l.wx, *l.wy, g.ws, g.h)
+          .run_2d(size_t(g.ws), size_t(3 * g.h), 64, 1);
     }
-    diag_.args(*l.wp, *l.wx, *l.wy, l.w, l.h, l.dinv).run(l.n());
+    diag_.args(*l.wp, *l.wx, *l.wy, g.ws, g.h, l.dinv);
+    g.run(diag_);
   }
 }
 
 void Multigrid::smooth(Level& l, int sweeps) {
+  const Planes& g = l.grid;
   for (int s = 0; s < sweeps; ++s) {
-    jacobi_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, l.dinv, kOmega, l.w, l.h, l.tmp).run(l.n());
+    jacobi_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, l.dinv, kOmega, g.ws, g.h, l.tmp);
+    g.run(jacobi_);
     std::swap(l.x, l.tmp);
   }
 }
 
-Vec4Buffer& Multigrid::apply(Vec4Buffer& r) {
+PlaneBuffer& Multigrid::apply(PlaneBuffer& r) {
   // One Jacobi sweep before and one after the coarse correction on every level; the one before
   // is fused with the residual and restriction.
   levels_[0]->b = &r;
@@ -73,15 +75,22 @@ Vec4Buffer& Multigrid::apply(Vec4Buffer& r) {
   for (size_t i = 0; i < last; ++i) {
     Level& l = *levels_[i];
     Level& c = *levels_[i + 1];
-    restrict_.args(*l.b, l.dinv, kOmega, *l.wp, *l.wx, *l.wy, l.w, l.h, *c.b, c.w, c.h).run(c.n());
+    const Planes &f = l.grid, &g = c.grid;
+    // Items of a coarse row: kernels/recon/multigrid.cl's MG_ITEM_COLS fine columns each.
+    const size_t per_row = size_t(f.ws) / size_t(std::max(2, f.vec));
+    restrict_.args(*l.b, l.dinv, kOmega, *l.wp, *l.wx, *l.wy, f.ws, f.h, *c.b, g.ws, g.h)
+        .run_2d(per_row * size_t(g.h), 3, 64, 1);
   }
   Level& coarsest = *levels_[last];
-  jacobi_zero_.args(*coarsest.b, coarsest.dinv, kOmega, coarsest.n(), coarsest.x).run(coarsest.n());
+  const Planes& cg = coarsest.grid;
+  jacobi_zero_.args(*coarsest.b, coarsest.dinv, kOmega, cg.ws, cg.h, coarsest.x);
+  cg.run(jacobi_zero_);
   smooth(coarsest, kCoarsestSweeps - 1);
   for (size_t i = last; i-- > 0;) {
     Level& l = *levels_[i];
     Level& c = *levels_[i + 1];
-    correct_.args(*l.b, l.dinv, kOmega, c.x, c.w, l.w, l.h, l.x).run(l.n());
+    correct_.args(*l.b, l.dinv, kOmega, c.x, c.grid.ws, c.grid.h, l.grid.ws, l.grid.h, l.x);
+    l.grid.run(correct_);
     smooth(l, 1);
   }
   return levels_[0]->x;

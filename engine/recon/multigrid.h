@@ -11,23 +11,22 @@ namespace gdr {
 
 class Multigrid {
  public:
-  Multigrid(Context& ctx, int width, int height);
+  Multigrid(Context& ctx, const Planes& fine);
   // Coarsens the weights of `sys` (call again whenever they change).
   void setup(const LinearSystem& sys);
   // Returns the buffer holding z = M r (owned by this object, valid until the next call).
-  Vec4Buffer& apply(Vec4Buffer& r);
+  PlaneBuffer& apply(PlaneBuffer& r);
   int levels() const { return int(levels_.size()); }
 
  private:
   struct Level {
-    int w = 0, h = 0;
-    Vec4Buffer own_wp, own_wx, own_wy, own_b;
-    Vec4Buffer *wp = nullptr, *wx = nullptr, *wy = nullptr, *b = nullptr;
-    Vec4Buffer dinv, x, tmp;
-    int n() const { return w * h; }
+    explicit Level(const Planes& g) : grid(g) {}
+    Planes grid;
+    PlaneBuffer own_wp, own_wx, own_wy, own_b;
+    PlaneBuffer *wp = nullptr, *wx = nullptr, *wy = nullptr, *b = nullptr;
+    PlaneBuffer dinv, x, tmp;
   };
   void smooth(Level& l, int sweeps);
-  Context& ctx_;
   std::vector<std::unique_ptr<Level>> levels_;
   Kernel coarsen_, diag_, jacobi_zero_, jacobi_, restrict_, correct_;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gdr {
 
@@ -12,20 +13,16 @@ ReconSystem::ReconSystem(Context& ctx, int width, int height, const std::vector<
 }
 
 ReconSystem::ReconSystem(Context& ctx, int width, int height)
-    : ctx_(ctx),
-      width_(width),
-      height_(height),
-      P_(ctx, size_t(width) * height),
-      Gx_(ctx, size_t(width) * height),
-      Gy_(ctx, size_t(width) * height),
-      mp_(ctx, size_t(width) * height),
-      mx_(ctx, size_t(width) * height),
-      my_(ctx, size_t(width) * height),
-      wp_(ctx, size_t(width) * height),
-      wx_(ctx, size_t(width) * height),
-      wy_(ctx, size_t(width) * height),
-      b_(ctx, size_t(width) * height),
-      x_(ctx, size_t(width) * height),
+    : grid_(width, height, recon_vector_width(ctx)),
+      dots_(ctx),
+      P_(grid_.buffer(ctx)),
+      Gx_(grid_.buffer(ctx)),
+      Gy_(grid_.buffer(ctx)),
+      wp_(grid_.buffer(ctx)),
+      wx_(grid_.buffer(ctx)),
+      wy_(grid_.buffer(ctx)),
+      b_(grid_.buffer(ctx)),
+      x_(grid_.buffer(ctx)),
       primal_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
       dx_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
       dy_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
@@ -43,55 +40,51 @@ void ReconSystem::load(const std::vector<float>& primal_rgb, const std::vector<f
   primal_in_.write(primal_rgb);
   dx_in_.write(dx_rgb);
   dy_in_.write(dy_rgb);
+  // Everything not packed below is absent (NaN); x is 0 where the primal is.
+  const float absent = std::numeric_limits<float>::quiet_NaN();
+  P_.fill(absent);
+  Gx_.fill(absent);
+  Gy_.fill(absent);
+  x_.fill(0.0f);
   count_.fill(0);
-  pack_.args(primal_in_, dx_in_, dy_in_, width_, height_, P_, Gx_, Gy_, mp_, mx_, my_, count_)
-      .run(size_t(width_) * height_);
+  pack_.args(primal_in_, dx_in_, dy_in_, grid_.w, grid_.h, grid_.ws, P_, Gx_, Gy_, x_, count_)
+      .run_2d(size_t(grid_.w), size_t(grid_.h), 64, 1);
   nonfinite_inputs_ = count_.read()[0];
-  // The primal (0 where missing) is the starting estimate.
-  cl_check(clEnqueueCopyBuffer(ctx_.queue(), P_.handle(), x_.handle(), 0, 0,
-                               sizeof(cl_float4) * size_t(width_) * height_, 0, nullptr, nullptr),
-           "clEnqueueCopyBuffer");
+  // x is the primal with its absent values at 0.
+  dots_.dot(x_, x_, grid_, DeviceDots::kEnergy);
+  cl_float4 s = dots_.read(DeviceDots::kEnergy);
+  double m = std::max({double(s.s[0]), double(s.s[1]), double(s.s[2])});
+  primal_rms_ = std::sqrt(std::max(0.0, m) / (double(grid_.w) * grid_.h));
 }
 
-LinearSystem ReconSystem::system() {
-  return LinearSystem{width_, height_, &wp_, &wx_, &wy_, &b_, &x_};
-}
+LinearSystem ReconSystem::system() { return LinearSystem{grid_, &wp_, &wx_, &wy_, &b_, &x_}; }
 
 void ReconSystem::set_l2_weights(float alpha) {
-  int n = width_ * height_;
-  weights_l2_.args(mp_, mx_, my_, alpha * alpha, n, wp_, wx_, wy_).run(n);
+  weights_l2_.args(P_, Gx_, Gy_, alpha * alpha, grid_.ws, grid_.h, wp_, wx_, wy_);
+  grid_.run(weights_l2_);
 }
 
 void ReconSystem::set_l1_weights(float alpha, float reg) {
-  weights_l1_.args(x_, P_, Gx_, Gy_, mp_, mx_, my_, alpha, reg, width_, height_, wp_, wx_, wy_)
-      .run(size_t(width_) * height_);
+  weights_l1_.args(x_, P_, Gx_, Gy_, alpha, reg, grid_.ws, grid_.h, wp_, wx_, wy_);
+  grid_.run(weights_l1_);
 }
 
 void ReconSystem::build_rhs() {
-  rhs_.args(P_, Gx_, Gy_, wp_, wx_, wy_, width_, height_, b_).run(size_t(width_) * height_);
+  rhs_.args(P_, Gx_, Gy_, wp_, wx_, wy_, grid_.ws, grid_.h, b_);
+  grid_.run(rhs_);
 }
 
-double ReconSystem::energy(float alpha, bool l2, DeviceDots& dots) {
-  int n = width_ * height_;
-  energy_.args(x_, P_, Gx_, Gy_, mp_, mx_, my_, alpha, l2 ? 1 : 0, width_, height_, dots.partial())
-      .run(DeviceDots::reduce_global(n));
-  dots.sum_partials(n, DeviceDots::kEnergy);
-  cl_float4 e = dots.read(DeviceDots::kEnergy);
+double ReconSystem::energy(float alpha, bool l2) {
+  energy_.args(x_, P_, Gx_, Gy_, alpha, l2 ? 1 : 0, grid_.ws, grid_.h, dots_.partial());
+  dots_.reduce(energy_, grid_, DeviceDots::kEnergy);
+  cl_float4 e = dots_.read(DeviceDots::kEnergy);
   return double(e.s[0]) + e.s[1] + e.s[2];
 }
 
-double ReconSystem::primal_rms(DeviceDots& dots) {
-  int n = width_ * height_;
-  dots.dot(P_, P_, n, DeviceDots::kEnergy);
-  cl_float4 s = dots.read(DeviceDots::kEnergy);
-  double m = std::max({double(s.s[0]), double(s.s[1]), double(s.s[2])});
-  return std::sqrt(std::max(0.0, m) / n);
-}
-
 std::vector<float> ReconSystem::result(unsigned* nonfinite_outputs) {
-  size_t n = size_t(width_) * height_;
   count_.fill(0);
-  unpack_.args(x_, P_, int(n), rgb_out_, count_).run(n);
+  unpack_.args(x_, P_, grid_.w, grid_.h, grid_.ws, rgb_out_, count_)
+      .run_2d(size_t(grid_.w), size_t(grid_.h), 64, 1);
   if (nonfinite_outputs) *nonfinite_outputs = count_.read()[0];
   return rgb_out_.read();
 }

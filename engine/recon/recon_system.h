@@ -1,5 +1,6 @@
-// The reconstruction problem on the device: packed inputs with their validity masks, the current
-// term weights, right-hand side and estimate, and the kernels that build them.
+// The reconstruction problem on the device: packed inputs (absent terms as NaN), the current
+// term weights, right-hand side and estimate, and the kernels that build them. Every buffer has
+// the planar layout of recon/planes.h.
 #pragma once
 #include <vector>
 
@@ -9,13 +10,12 @@ namespace gdr {
 
 // A linear system A x = b of the screened Poisson form (see kernels/recon/grid.h).
 struct LinearSystem {
-  int width = 0, height = 0;
-  Vec4Buffer* wp = nullptr;
-  Vec4Buffer* wx = nullptr;
-  Vec4Buffer* wy = nullptr;
-  Vec4Buffer* b = nullptr;
-  Vec4Buffer* x = nullptr;
-  int pixels() const { return width * height; }
+  Planes grid;
+  PlaneBuffer* wp = nullptr;
+  PlaneBuffer* wx = nullptr;
+  PlaneBuffer* wy = nullptr;
+  PlaneBuffer* b = nullptr;
+  PlaneBuffer* x = nullptr;
 };
 
 // Outcome of one linear solve.
@@ -36,27 +36,27 @@ class ReconSystem {
             const std::vector<float>& dy_rgb);
 
   unsigned nonfinite_inputs() const { return nonfinite_inputs_; }
+  // Root mean square of the (finite) primal over all pixels, the largest of R, G, B.
+  double primal_rms() const { return primal_rms_; }
   void set_l2_weights(float alpha);
   // IRLS weights 1/(|e| + reg) from the current estimate x.
   void set_l1_weights(float alpha, float reg);
   // b from the current weights.
   void build_rhs();
   // Objective value of x (sum over channels) in the L1 or L2 norm.
-  double energy(float alpha, bool l2, DeviceDots& dots);
-  // Root mean square of the primal over all pixels, the largest of R, G, B.
-  double primal_rms(DeviceDots& dots);
+  double energy(float alpha, bool l2);
   // x as interleaved RGB, always finite.
   std::vector<float> result(unsigned* nonfinite_outputs);
 
   LinearSystem system();
-  int width() const { return width_; }
-  int height() const { return height_; }
+  const Planes& grid() const { return grid_; }
 
  private:
-  Context& ctx_;
-  int width_, height_;
+  Planes grid_;
   unsigned nonfinite_inputs_ = 0;
-  Vec4Buffer P_, Gx_, Gy_, mp_, mx_, my_, wp_, wx_, wy_, b_, x_;
+  double primal_rms_ = 0;
+  DeviceDots dots_;
+  PlaneBuffer P_, Gx_, Gy_, wp_, wx_, wy_, b_, x_;
   Buffer<float> primal_in_, dx_in_, dy_in_, rgb_out_;
   Buffer<cl_uint> count_;
   Kernel pack_, weights_l2_, weights_l1_, rhs_, energy_, unpack_;

@@ -51,7 +51,6 @@ class Solver {
     fast_solver_->setup(sys);
     return fast_solver_->solve(sys, max_iterations, tolerance, relative_to_start);
   }
-  DeviceDots& dots() { return fast_ ? fast_solver_->dots() : cg_->dots(); }
 
  private:
   bool fast_;
@@ -129,7 +128,7 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
     // smear in as reg shrinks.
     // reg is published for images of order 1; brighter images scale it with their RMS so that
     // the weights (and the conditioning of each round) do not depend on the exposure.
-    double scale = std::max(1.0, problem.primal_rms(solver.dots()));
+    double scale = std::max(1.0, problem.primal_rms());
     if (!std::isfinite(scale)) scale = 1.0;
     float reg = float((settings.l1_reg > 0 ? settings.l1_reg : 0.05f) * scale);
     for (int round = 0; round < settings.l1_rounds; ++round, reg *= 0.5f) {
@@ -141,7 +140,7 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
       result.residual = o.residual;
     }
   }
-  result.energy = problem.energy(settings.alpha, !l1, solver.dots());
+  result.energy = problem.energy(settings.alpha, !l1);
   unsigned nonfinite_outputs = 0;
   result.rgb = problem.result(&nonfinite_outputs);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

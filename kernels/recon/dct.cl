@@ -4,8 +4,10 @@
 //   (alpha^2 + 4 sin^2(pi k / 2h)) I + Dx^T Dx.
 // The DCT of each column is Makhoul's: reorder (even samples forward, odd ones backward), a
 // complex FFT of length h (mixed-radix Stockham, one launch per radix stage), and a twist.
-// Images are float4 planes (see grid.h); complex planes are a real and an imaginary plane of the
-// same layout, so neighbouring work items (columns) touch neighbouring words.
+// Inside the transform the three channels travel together as one float4 per pixel, row-major
+// (w x h, no gaps); complex planes are a real and an imaginary plane of that layout, so
+// neighbouring work items (columns) touch neighbouring words. Only load and store see the planar
+// layout of grid.h.
 #include "recon/grid.h"
 
 // tw[m] = exp(-2 pi i m / n) for m < n.
@@ -19,12 +21,14 @@ __kernel void dct_twiddles(int n, __global float2* tw) {
 // The sample of a column that lands at position j of Makhoul's reordering.
 inline int dct_source_row(int j, int h) { return j < (h + 1) / 2 ? 2 * j : 2 * (h - 1 - j) + 1; }
 
-// re = reordered b, im = 0. 2D launch over (column, j).
-__kernel void dct_load(__global const float4* b, int w, int h, __global float4* re,
+// re = reordered b (b in the planar layout of grid.h), im = 0. 2D launch over (column, j).
+__kernel void dct_load(__global const float* b, int w, int h, int ws, __global float4* re,
                        __global float4* im) {
   int x = get_global_id(0), j = get_global_id(1);
   if (x >= w || j >= h) return;
-  re[j * w + x] = b[dct_source_row(j, h) * w + x];
+  int e = dct_source_row(j, h) * ws + x;
+  re[j * w + x] = (float4)(b[recon_plane(0, ws, h) + e], b[recon_plane(1, ws, h) + e],
+                           b[recon_plane(2, ws, h) + e], 0.0f);
   im[j * w + x] = (float4)(0.0f);
 }
 
@@ -193,10 +197,14 @@ __kernel void dct_inverse_load(__global const float4* y, int w, int h, __global 
   im[k * w + x] = s * a - c * b;
 }
 
-// x = the real part of the inverse FFT, undoing the reordering, scaled by 1/h.
-__kernel void dct_store(__global const float4* re, int w, int h, __global float4* x) {
+// x = the real part of the inverse FFT, undoing the reordering, scaled by 1/h (x in the planar
+// layout of grid.h).
+__kernel void dct_store(__global const float4* re, int w, int h, int ws, __global float* x) {
   int col = get_global_id(0), j = get_global_id(1);
   if (col >= w || j >= h) return;
   float4 v = re[j * w + col] / (float)h;
-  x[dct_source_row(j, h) * w + col] = (float4)(v.xyz, 0.0f);
+  int e = dct_source_row(j, h) * ws + col;
+  x[recon_plane(0, ws, h) + e] = v.x;
+  x[recon_plane(1, ws, h) + e] = v.y;
+  x[recon_plane(2, ws, h) + e] = v.z;
 }

@@ -1,43 +1,98 @@
-// Shared by the reconstruction kernels. Images live on the device as one float4 per pixel
-// (R, G, B, unused = 0), row-major from the top row, so every kernel treats the three colour
-// channels at once. A term's weights are stored per pixel: wp for the primal term, wx for the
-// edge to the right neighbour, wy for the edge to the pixel below (zero on the last column / row:
-// no gradient across the image border).
+// Shared by the reconstruction kernels. An image lives on the device as three planes of one float
+// per pixel (R, G, B), stacked in one buffer with gaps between them:
+//   element (c, x, y) = ws * (1 + c * (h + 1) + y) + x,
+// where the row stride ws is the width rounded up to RECON_ALIGN. The columns past the width and
+// the rows between planes (one above each plane, one below the last) are gap: every term weight is
+// zero there and every vector stays zero, so the operator needs no border tests, a pixel's left
+// neighbour on the row above is harmless, and the three channels never mix. (Absent inputs,
+// including the gap, are stored as NaN: see recon_pack.)
+//
+// A work item takes a chunk of RECON_VEC consecutive floats of one plane. On CPU devices chunks are
+// 16 wide and written as float16 vector operations (PoCL does not vectorise these kernels across
+// work items by itself); on GPUs a chunk is one float and neighbouring items touch neighbouring
+// words. Kernels over chunks are launched 2D: (chunk of the plane, channel).
 #pragma once
 
 // Every launch uses this local size (PoCL compiles again per new local size).
 #define RECON_LOCAL 64
+// Row strides are multiples of this (the widest chunk).
+#define RECON_ALIGN 16
 
-// Each item of a reducing kernel takes a share of the n pixels: a contiguous run where
-// RECON_CONTIGUOUS is defined (CPU devices: one thread walks memory in order), interleaved
-// otherwise (GPUs: neighbouring items touch neighbouring words).
-#ifdef RECON_CONTIGUOUS
-#define RECON_FOR_SHARE(i, n)                                                        \
-  for (int i##_len = ((n) + (int)get_global_size(0) - 1) / (int)get_global_size(0), \
-           i = (int)get_global_id(0) * i##_len, i##_end = min((int)(n), i + i##_len); \
-       i < i##_end; ++i)
-#else
-#define RECON_FOR_SHARE(i, n) \
-  for (int i = (int)get_global_id(0); i < (n); i += (int)get_global_size(0))
+#ifndef RECON_VEC
+#define RECON_VEC 1
 #endif
 
-// (A x)(i) = wp x_i + sum over the pixel's edges of w_e (x_i - x_j): the screened Poisson
-// operator alpha^2 Wp + Dx^T Wx Dx + Dy^T Wy Dy applied at one pixel.
-inline float4 recon_apply_at(__global const float4* x, __global const float4* wp,
-                             __global const float4* wx, __global const float4* wy, int px, int py,
-                             int w, int h) {
-  int i = py * w + px;
-  float4 xi = x[i];
-  float4 s = wp[i] * xi;
-  if (px + 1 < w) s += wx[i] * (xi - x[i + 1]);
-  if (px > 0) s += wx[i - 1] * (xi - x[i - 1]);
-  if (py + 1 < h) s += wy[i] * (xi - x[i + w]);
-  if (py > 0) s += wy[i - w] * (xi - x[i - w]);
-  return s;
+#if RECON_VEC == 16
+typedef float16 floatv;
+#define VLOAD(p) vload16(0, (p))
+#define VSTORE(v, p) vstore16((v), 0, (p))
+inline float recon_hsum(float16 v) {
+  float8 a = v.lo + v.hi;
+  float4 b = a.lo + a.hi;
+  return b.x + b.y + b.z + b.w;
+}
+#elif RECON_VEC == 1
+typedef float floatv;
+#define VLOAD(p) (*(p))
+#define VSTORE(v, p) (*(p) = (v))
+#define recon_hsum(v) (v)
+#else
+#error "RECON_VEC must be 1 or 16"
+#endif
+
+// First element of plane c.
+inline int recon_plane(int c, int ws, int h) { return ws * (1 + c * (h + 1)); }
+// Chunks in one plane.
+inline int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
+
+// The chunk of this work item: channel `c`, first element `o`. Returns past the last chunk.
+#define RECON_CHUNK(o, c, ws, h)                                 \
+  const int c = get_global_id(1);                                \
+  if ((int)get_global_id(0) >= recon_chunks(ws, h)) return;      \
+  const int o = recon_plane(c, ws, h) + (int)get_global_id(0) * RECON_VEC;
+
+// Reducing kernels, launched 2D as (groups * RECON_LOCAL, channel): each item takes a share of the
+// plane's chunks, a contiguous run where RECON_CONTIGUOUS is defined (CPU devices: one thread
+// walks memory in order), interleaved otherwise (GPUs).
+#ifdef RECON_CONTIGUOUS
+#define RECON_FOR_SHARE(o, c, ws, h)                                                           \
+  const int c = get_global_id(1);                                                              \
+  for (int o##_n = recon_chunks(ws, h),                                                        \
+           o##_len = (o##_n + (int)get_global_size(0) - 1) / (int)get_global_size(0),          \
+           o##_k = (int)get_global_id(0) * o##_len, o##_end = min(o##_n, o##_k + o##_len),     \
+           o = recon_plane(c, ws, h) + o##_k * RECON_VEC;                                      \
+       o##_k < o##_end; ++o##_k, o += RECON_VEC)
+#else
+#define RECON_FOR_SHARE(o, c, ws, h)                                                           \
+  const int c = get_global_id(1);                                                              \
+  for (int o##_n = recon_chunks(ws, h), o##_k = (int)get_global_id(0),                         \
+           o = recon_plane(c, ws, h) + o##_k * RECON_VEC;                                      \
+       o##_k < o##_n; o##_k += (int)get_global_size(0),                                        \
+           o += (int)get_global_size(0) * RECON_VEC)
+#endif
+
+// Absent terms (non-finite inputs, the last column of dx, the last row of dy, the gap) are NaN
+// in the packed inputs: their weight is 0 and their value reads as 0.
+#define RECON_ABSENT(v) isnan(v)
+inline floatv recon_value(floatv v) { return select(v, (floatv)(0.0f), RECON_ABSENT(v)); }
+// `weight` where the term `v` is present, else 0.
+inline floatv recon_weight(floatv weight, floatv v) {
+  return select(weight, (floatv)(0.0f), RECON_ABSENT(v));
 }
 
-// Sum of `v` over the work-group; every item of the group must call it.
-inline float4 recon_group_sum(float4 v, __local float4* scratch) {
+// (A x) at the chunk starting at element o: wp x_i + sum over the pixel's edges of w_e (x_i - x_j),
+// the screened Poisson operator Wp + Dx^T Wx Dx + Dy^T Wy Dy (weights are zero where an edge
+// leaves the image).
+inline floatv recon_apply_at(__global const float* x, __global const float* wp,
+                             __global const float* wx, __global const float* wy, int o, int ws) {
+  floatv xi = VLOAD(x + o);
+  return VLOAD(wp + o) * xi + VLOAD(wx + o) * (xi - VLOAD(x + o + 1)) +
+         VLOAD(wx + o - 1) * (xi - VLOAD(x + o - 1)) + VLOAD(wy + o) * (xi - VLOAD(x + o + ws)) +
+         VLOAD(wy + o - ws) * (xi - VLOAD(x + o - ws));
+}
+
+// Sum of `v` over the work-group (dimension 0); every item of the group must call it.
+inline float recon_group_sum(float v, __local float* scratch) {
   int l = get_local_id(0);
   scratch[l] = v;
   barrier(CLK_LOCAL_MEM_FENCE);
@@ -45,18 +100,28 @@ inline float4 recon_group_sum(float4 v, __local float4* scratch) {
     if (l < s) scratch[l] += scratch[l + s];
     barrier(CLK_LOCAL_MEM_FENCE);
   }
-  float4 total = scratch[0];
+  float total = scratch[0];
   barrier(CLK_LOCAL_MEM_FENCE);
   return total;
 }
+
+// A reducing kernel's group total into partial[channel][group].
+#define RECON_WRITE_PARTIAL(s, scratch, partial)                                          \
+  {                                                                                       \
+    float total_ = recon_group_sum(recon_hsum(s), scratch);                               \
+    if (get_local_id(0) == 0)                                                             \
+      partial[get_global_id(1) * get_num_groups(0) + get_group_id(0)] = total_;           \
+  }
 
 inline float recon_safe_div(float a, float b) {
   float q = b > 0.0f ? a / b : 0.0f;
   return isfinite(q) ? q : 0.0f;
 }
 
-// Per-channel a / b for the CG step lengths; 0 where b <= 0 (a converged or empty channel).
-inline float4 recon_ratio(float4 a, float4 b) {
-  return (float4)(recon_safe_div(a.x, b.x), recon_safe_div(a.y, b.y), recon_safe_div(a.z, b.z),
-                  0.0f);
+// Per-channel scalars (CG step lengths) live in float4 slots, one lane per channel.
+inline float recon_lane(float4 v, int c) { return c == 0 ? v.x : c == 1 ? v.y : v.z; }
+
+// Channel c's a / b for the CG step lengths; 0 where b <= 0 (a converged or empty channel).
+inline float recon_ratio(__global const float4* scal, int num, int den, int c) {
+  return recon_safe_div(recon_lane(scal[num], c), recon_lane(scal[den], c));
 }

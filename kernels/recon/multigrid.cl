@@ -1,99 +1,117 @@
 // Multigrid V-cycle used as the preconditioner of the fast solver. Coarse levels aggregate 2x2
 // pixels; with piecewise-constant prolongation P the Galerkin operator P^T A P is again a
 // screened Poisson operator whose weights are sums of fine weights (edges inside an aggregate
-// cancel), so jumping IRLS weights are coarsened consistently. Damped Jacobi smooths.
+// cancel), so jumping IRLS weights are coarsened consistently. Damped Jacobi smooths. Every level
+// has the layout of grid.h with its own width, height and row stride.
 #include "recon/grid.h"
 
+// Fine columns one restriction item covers (two rows of them): 16 on CPUs (8 coarse pixels),
+// 2 otherwise (one coarse pixel).
+#define MG_ITEM_COLS (RECON_VEC == 1 ? 2 : RECON_VEC)
+
 // Coarse weights of P^T A P: wp sums the 2x2 children; an edge sums the fine edges it crosses.
-__kernel void mg_coarsen(__global const float4* wpf, __global const float4* wxf,
-                         __global const float4* wyf, int wf, int hf, __global float4* wpc,
-                         __global float4* wxc, __global float4* wyc, int wc, int hc) {
-  int i = get_global_id(0);
-  if (i >= wc * hc) return;
-  int cx = i % wc, cy = i / wc;
-  float4 sp = (float4)(0.0f), sx = (float4)(0.0f), sy = (float4)(0.0f);
+// Edges leaving the image come out zero because the fine ones there are. 2D launch over (coarse
+// column < wsc, channel * hc + coarse row).
+__kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
+                         __global const float* wyf, int wsf, int hf, __global float* wpc,
+                         __global float* wxc, __global float* wyc, int wsc, int hc) {
+  int cx = get_global_id(0), row = get_global_id(1);
+  if (cx >= wsc || row >= 3 * hc) return;
+  int c = row / hc, cy = row % hc;
+  float sp = 0.0f, sx = 0.0f, sy = 0.0f;
   for (int dy = 0; dy < 2; ++dy) {
+    // Row 2 cy + 1 may be the gap row below the plane (all zero).
     int fy = 2 * cy + dy;
-    if (fy >= hf) break;
     for (int dx = 0; dx < 2; ++dx) {
       int fx = 2 * cx + dx;
-      if (fx >= wf) break;
-      int f = fy * wf + fx;
+      if (fx >= wsf) break;
+      int f = recon_plane(c, wsf, hf) + fy * wsf + fx;
       sp += wpf[f];
       if (dx == 1) sx += wxf[f];
       if (dy == 1) sy += wyf[f];
     }
   }
-  // The edge right of the last coarse column (or below the last row) leaves the image.
-  wpc[i] = sp;
-  wxc[i] = cx + 1 < wc ? sx : (float4)(0.0f);
-  wyc[i] = cy + 1 < hc ? sy : (float4)(0.0f);
+  int e = recon_plane(c, wsc, hc) + cy * wsc + cx;
+  wpc[e] = sp;
+  wxc[e] = sx;
+  wyc[e] = sy;
 }
 
 // x = omega D^-1 b: one Jacobi sweep from a zero guess.
-__kernel void mg_jacobi_zero(__global const float4* b, __global const float4* dinv, float omega,
-                             int n, __global float4* x) {
-  int i = get_global_id(0);
-  if (i >= n) return;
-  x[i] = omega * dinv[i] * b[i];
+__kernel void mg_jacobi_zero(__global const float* b, __global const float* dinv, float omega,
+                             int ws, int h, __global float* x) {
+  RECON_CHUNK(o, c, ws, h)
+  VSTORE(omega * VLOAD(dinv + o) * VLOAD(b + o), x + o);
 }
 
 // xout = x + omega D^-1 (b - A x).
-__kernel void mg_jacobi(__global const float4* x, __global const float4* b,
-                        __global const float4* wp, __global const float4* wx,
-                        __global const float4* wy, __global const float4* dinv, float omega,
-                        int w, int h, __global float4* xout) {
-  int i = get_global_id(0);
-  if (i >= w * h) return;
-  float4 r = b[i] - recon_apply_at(x, wp, wx, wy, i % w, i / w, w, h);
-  xout[i] = x[i] + omega * dinv[i] * r;
+__kernel void mg_jacobi(__global const float* x, __global const float* b,
+                        __global const float* wp, __global const float* wx,
+                        __global const float* wy, __global const float* dinv, float omega,
+                        int ws, int h, __global float* xout) {
+  RECON_CHUNK(o, c, ws, h)
+  floatv r = VLOAD(b + o) - recon_apply_at(x, wp, wx, wy, o, ws);
+  VSTORE(VLOAD(x + o) + omega * VLOAD(dinv + o) * r, xout + o);
 }
 
 // The pre-smoothed estimate from a zero guess, x0 = omega D^-1 b, recomputed where needed
 // rather than stored.
-inline float4 mg_x0(__global const float4* b, __global const float4* dinv, float omega, int j) {
-  return omega * dinv[j] * b[j];
+inline floatv mg_x0(__global const float* b, __global const float* dinv, float omega, int o) {
+  return omega * VLOAD(dinv + o) * VLOAD(b + o);
 }
 
-// bc = P^T (b - A x0): pre-smoothing, residual and restriction in one pass.
-__kernel void mg_restrict_presmoothed(__global const float4* b, __global const float4* dinv,
-                                      float omega, __global const float4* wp,
-                                      __global const float4* wx, __global const float4* wy,
-                                      int wf, int hf, __global float4* bc, int wc, int hc) {
-  int i = get_global_id(0);
-  if (i >= wc * hc) return;
-  int cx = i % wc, cy = i / wc;
-  float4 s = (float4)(0.0f);
-  for (int dy = 0; dy < 2; ++dy) {
-    int fy = 2 * cy + dy;
-    if (fy >= hf) break;
-    for (int dx = 0; dx < 2; ++dx) {
-      int fx = 2 * cx + dx;
-      if (fx >= wf) break;
-      int f = fy * wf + fx;
-      float4 xf = mg_x0(b, dinv, omega, f);
-      float4 ax = wp[f] * xf;
-      if (fx + 1 < wf) ax += wx[f] * (xf - mg_x0(b, dinv, omega, f + 1));
-      if (fx > 0) ax += wx[f - 1] * (xf - mg_x0(b, dinv, omega, f - 1));
-      if (fy + 1 < hf) ax += wy[f] * (xf - mg_x0(b, dinv, omega, f + wf));
-      if (fy > 0) ax += wy[f - wf] * (xf - mg_x0(b, dinv, omega, f - wf));
-      s += b[f] - ax;
-    }
-  }
-  bc[i] = s;
+// b - A x0 at the chunk starting at o.
+inline floatv mg_presmoothed_residual(__global const float* b, __global const float* dinv,
+                                      float omega, __global const float* wp,
+                                      __global const float* wx, __global const float* wy, int o,
+                                      int ws) {
+  floatv x0 = mg_x0(b, dinv, omega, o);
+  floatv ax = VLOAD(wp + o) * x0 + VLOAD(wx + o) * (x0 - mg_x0(b, dinv, omega, o + 1)) +
+              VLOAD(wx + o - 1) * (x0 - mg_x0(b, dinv, omega, o - 1)) +
+              VLOAD(wy + o) * (x0 - mg_x0(b, dinv, omega, o + ws)) +
+              VLOAD(wy + o - ws) * (x0 - mg_x0(b, dinv, omega, o - ws));
+  return VLOAD(b + o) - ax;
 }
 
-// y = x0 + P xc (the coarse correction added to the pre-smoothed estimate), at fine pixel j.
-inline float4 mg_corrected(__global const float4* b, __global const float4* dinv, float omega,
-                           __global const float4* xc, int wc, int fx, int fy, int wf) {
-  return mg_x0(b, dinv, omega, fy * wf + fx) + xc[(fy / 2) * wc + fx / 2];
+// bc = P^T (b - A x0): pre-smoothing, residual and restriction in one pass. 2D launch over
+// (item of a coarse row * hc, channel), wsf / MG_ITEM_COLS items per coarse row.
+__kernel void mg_restrict_presmoothed(__global const float* b, __global const float* dinv,
+                                      float omega, __global const float* wp,
+                                      __global const float* wx, __global const float* wy,
+                                      int wsf, int hf, __global float* bc, int wsc, int hc) {
+  const int c = get_global_id(1);
+  const int per_row = wsf / MG_ITEM_COLS;
+  const int k = get_global_id(0);
+  if (k >= per_row * hc) return;
+  const int cy = k / per_row, j = k % per_row;
+  // Fine rows 2 cy and 2 cy + 1 (the latter may be the gap row, whose residual is 0).
+  const int f = recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
+  const int e = recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
+#if RECON_VEC == 16
+  float16 s = mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f, wsf) +
+              mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + wsf, wsf);
+  vstore8(s.even + s.odd, 0, bc + e);
+#else
+  bc[e] = mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f, wsf) +
+          mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + 1, wsf) +
+          mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + wsf, wsf) +
+          mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + wsf + 1, wsf);
+#endif
 }
 
-// y = x0 + P xc: the coarse correction added to the pre-smoothed estimate, followed by an
-// mg_jacobi sweep. (Fusing the two, recomputing y at the neighbours, measured slower on PoCL.)
-__kernel void mg_correct(__global const float4* b, __global const float4* dinv, float omega,
-                         __global const float4* xc, int wc, int wf, int hf, __global float4* y) {
-  int i = get_global_id(0);
-  if (i >= wf * hf) return;
-  y[i] = mg_corrected(b, dinv, omega, xc, wc, i % wf, i / wf, wf);
+// y = x0 + P xc: the coarse correction added to the pre-smoothed estimate; an mg_jacobi sweep
+// follows. (Fusing the two, recomputing y at the neighbours, measured slower on PoCL.)
+__kernel void mg_correct(__global const float* b, __global const float* dinv, float omega,
+                         __global const float* xc, int wsc, int hc, int wsf, int hf,
+                         __global float* y) {
+  RECON_CHUNK(o, c, wsf, hf)
+  const int per_row = wsf / RECON_VEC;
+  const int fy = get_global_id(0) / per_row, j = get_global_id(0) % per_row;
+  const int e = recon_plane(c, wsc, hc) + (fy / 2) * wsc + (j * RECON_VEC) / 2;
+#if RECON_VEC == 16
+  float16 up = shuffle(vload8(0, xc + e), (uint16)(0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7));
+#else
+  float up = xc[e];
+#endif
+  VSTORE(mg_x0(b, dinv, omega, o) + up, y + o);
 }

@@ -1,24 +1,25 @@
-// Dot products in two launches: each work-group sums its share into partial[group], then one
-// group adds the partials into a slot of the scalar buffer that the CG kernels read directly
-// (no host round trip for step lengths).
+// Dot products in two launches: each work-group sums its share of one channel into
+// partial[channel][group], then one group per channel adds the partials into that channel's lane
+// of a slot of the scalar buffer that the CG kernels read directly (no host round trip for step
+// lengths). Layout: grid.h.
 #include "recon/grid.h"
 
-// Global size = groups * RECON_LOCAL; items stride over the n pixels.
-__kernel void recon_dot_partial(__global const float4* a, __global const float4* b, int n,
-                                __global float4* partial) {
-  __local float4 scratch[RECON_LOCAL];
-  float4 s = (float4)(0.0f);
-  RECON_FOR_SHARE(i, n) s += a[i] * b[i];
-  float4 total = recon_group_sum(s, scratch);
-  if (get_local_id(0) == 0) partial[get_group_id(0)] = total;
+// Reducing launch: partial sums of a * b.
+__kernel void recon_dot_partial(__global const float* a, __global const float* b, int ws, int h,
+                                __global float* partial) {
+  __local float scratch[RECON_LOCAL];
+  floatv s = (floatv)(0.0f);
+  RECON_FOR_SHARE(o, c, ws, h) s += VLOAD(a + o) * VLOAD(b + o);
+  RECON_WRITE_PARTIAL(s, scratch, partial)
 }
 
-// One group: scal[slot] = sum of partial[0 .. groups).
-__kernel void recon_sum_final(__global const float4* partial, int groups, __global float4* scal,
+// Launched (RECON_LOCAL, 3): lane c of the float4 slot `slot` = sum of partial[c][0 .. groups).
+__kernel void recon_sum_final(__global const float* partial, int groups, __global float* scal,
                               int slot) {
-  __local float4 scratch[RECON_LOCAL];
-  float4 s = (float4)(0.0f);
-  for (int i = get_local_id(0); i < groups; i += RECON_LOCAL) s += partial[i];
-  float4 total = recon_group_sum(s, scratch);
-  if (get_local_id(0) == 0) scal[slot] = total;
+  __local float scratch[RECON_LOCAL];
+  int c = get_global_id(1);
+  float s = 0.0f;
+  for (int i = get_local_id(0); i < groups; i += RECON_LOCAL) s += partial[c * groups + i];
+  float total = recon_group_sum(s, scratch);
+  if (get_local_id(0) == 0) scal[4 * slot + c] = total;
 }

@@ -1,136 +1,121 @@
 // Problem set-up for the screened Poisson reconstruction: packing and checking the inputs,
 // the per-term weights (L2, or IRLS for L1), the right-hand side, the Jacobi diagonal, the
-// objective value, and unpacking the result.
+// objective value, and unpacking the result. Layout: grid.h.
 #include "recon/grid.h"
 
-inline float recon_take(float v, float* mask, __global uint* nonfinite) {
-  if (isfinite(v)) return v;
-  *mask = 0.0f;
-  atomic_inc(nonfinite);
-  return 0.0f;
-}
-
-// Interleaved RGB primal / dx / dy -> float4 planes; a non-finite value is counted and its term
-// dropped (mask 0). The last column of dx and the last row of dy are no terms at all.
+// Interleaved RGB primal / dx / dy -> planes; x starts at the primal. P, Gx, Gy arrive filled
+// with NaN (absent) and x with 0: a finite input is stored, a non-finite one is counted and stays
+// absent. The last column of dx and the last row of dy are no terms at all. 2D launch over pixels.
 __kernel void recon_pack(__global const float* primal, __global const float* dx,
-                         __global const float* dy, int w, int h, __global float4* P,
-                         __global float4* Gx, __global float4* Gy, __global float4* mp,
-                         __global float4* mx, __global float4* my, __global uint* nonfinite) {
-  int i = get_global_id(0);
-  if (i >= w * h) return;
-  int px = i % w, py = i / w;
-  float p[3], gx[3], gy[3], cp[3], cx[3], cy[3];
+                         __global const float* dy, int w, int h, int ws, __global float* P,
+                         __global float* Gx, __global float* Gy, __global float* x,
+                         __global uint* nonfinite) {
+  int px = get_global_id(0), py = get_global_id(1);
+  if (px >= w || py >= h) return;
+  int i = py * w + px;
+  uint bad = 0;
   for (int c = 0; c < 3; ++c) {
-    cp[c] = 1.0f;
-    cx[c] = px + 1 < w ? 1.0f : 0.0f;
-    cy[c] = py + 1 < h ? 1.0f : 0.0f;
-    p[c] = recon_take(primal[3 * i + c], &cp[c], nonfinite);
-    gx[c] = cx[c] > 0.0f ? recon_take(dx[3 * i + c], &cx[c], nonfinite) : 0.0f;
-    gy[c] = cy[c] > 0.0f ? recon_take(dy[3 * i + c], &cy[c], nonfinite) : 0.0f;
+    int e = recon_plane(c, ws, h) + py * ws + px;
+    float p = primal[3 * i + c];
+    if (isfinite(p)) {
+      P[e] = p;
+      x[e] = p;
+    } else {
+      ++bad;
+    }
+    if (px + 1 < w) {
+      float g = dx[3 * i + c];
+      if (isfinite(g)) Gx[e] = g; else ++bad;
+    }
+    if (py + 1 < h) {
+      float g = dy[3 * i + c];
+      if (isfinite(g)) Gy[e] = g; else ++bad;
+    }
   }
-  P[i] = (float4)(p[0], p[1], p[2], 0.0f);
-  Gx[i] = (float4)(gx[0], gx[1], gx[2], 0.0f);
-  Gy[i] = (float4)(gy[0], gy[1], gy[2], 0.0f);
-  mp[i] = (float4)(cp[0], cp[1], cp[2], 0.0f);
-  mx[i] = (float4)(cx[0], cx[1], cx[2], 0.0f);
-  my[i] = (float4)(cy[0], cy[1], cy[2], 0.0f);
+  if (bad) atomic_add(nonfinite, bad);
 }
 
 // L2: every present term has weight 1 (alpha^2 for the primal term).
-__kernel void recon_weights_l2(__global const float4* mp, __global const float4* mx,
-                               __global const float4* my, float alpha2, int n,
-                               __global float4* wp, __global float4* wx, __global float4* wy) {
-  int i = get_global_id(0);
-  if (i >= n) return;
-  wp[i] = alpha2 * mp[i];
-  wx[i] = mx[i];
-  wy[i] = my[i];
+__kernel void recon_weights_l2(__global const float* P, __global const float* Gx,
+                               __global const float* Gy, float alpha2, int ws, int h,
+                               __global float* wp, __global float* wx, __global float* wy) {
+  RECON_CHUNK(o, c, ws, h)
+  VSTORE(recon_weight((floatv)(alpha2), VLOAD(P + o)), wp + o);
+  VSTORE(recon_weight((floatv)(1.0f), VLOAD(Gx + o)), wx + o);
+  VSTORE(recon_weight((floatv)(1.0f), VLOAD(Gy + o)), wy + o);
 }
 
 // L1 by iteratively reweighted least squares: a term with residual e gets weight 1/(|e| + reg),
 // so that w e^2 ~ |e| at the current estimate x.
-__kernel void recon_weights_l1(__global const float4* x, __global const float4* P,
-                               __global const float4* Gx, __global const float4* Gy,
-                               __global const float4* mp, __global const float4* mx,
-                               __global const float4* my, float alpha, float reg, int w, int h,
-                               __global float4* wp, __global float4* wx, __global float4* wy) {
-  int i = get_global_id(0);
-  if (i >= w * h) return;
-  int px = i % w, py = i / w;
-  float4 xi = x[i];
-  float4 ep = alpha * (xi - P[i]);
-  wp[i] = alpha * alpha * mp[i] / (fabs(ep) + reg);
-  float4 ex = px + 1 < w ? x[i + 1] - xi - Gx[i] : (float4)(0.0f);
-  float4 ey = py + 1 < h ? x[i + w] - xi - Gy[i] : (float4)(0.0f);
-  wx[i] = mx[i] / (fabs(ex) + reg);
-  wy[i] = my[i] / (fabs(ey) + reg);
+__kernel void recon_weights_l1(__global const float* x, __global const float* P,
+                               __global const float* Gx, __global const float* Gy, float alpha,
+                               float reg, int ws, int h, __global float* wp,
+                               __global float* wx, __global float* wy) {
+  RECON_CHUNK(o, c, ws, h)
+  floatv xi = VLOAD(x + o), p = VLOAD(P + o), gx = VLOAD(Gx + o), gy = VLOAD(Gy + o);
+  floatv ep = alpha * (xi - p);
+  floatv ex = VLOAD(x + o + 1) - xi - gx;
+  floatv ey = VLOAD(x + o + ws) - xi - gy;
+  VSTORE(recon_weight(alpha * alpha / (fabs(ep) + reg), p), wp + o);
+  VSTORE(recon_weight(1.0f / (fabs(ex) + reg), gx), wx + o);
+  VSTORE(recon_weight(1.0f / (fabs(ey) + reg), gy), wy + o);
 }
 
 // b = Wp P + Dx^T Wx Gx + Dy^T Wy Gy, with (Dx^T v)(x) = v(x-1) - v(x).
-__kernel void recon_rhs(__global const float4* P, __global const float4* Gx,
-                        __global const float4* Gy, __global const float4* wp,
-                        __global const float4* wx, __global const float4* wy, int w, int h,
-                        __global float4* b) {
-  int i = get_global_id(0);
-  if (i >= w * h) return;
-  int px = i % w, py = i / w;
-  float4 s = wp[i] * P[i] - wx[i] * Gx[i] - wy[i] * Gy[i];
-  if (px > 0) s += wx[i - 1] * Gx[i - 1];
-  if (py > 0) s += wy[i - w] * Gy[i - w];
-  b[i] = s;
+__kernel void recon_rhs(__global const float* P, __global const float* Gx,
+                        __global const float* Gy, __global const float* wp,
+                        __global const float* wx, __global const float* wy, int ws, int h,
+                        __global float* b) {
+  RECON_CHUNK(o, c, ws, h)
+  floatv s = VLOAD(wp + o) * recon_value(VLOAD(P + o)) -
+             VLOAD(wx + o) * recon_value(VLOAD(Gx + o)) -
+             VLOAD(wy + o) * recon_value(VLOAD(Gy + o)) +
+             VLOAD(wx + o - 1) * recon_value(VLOAD(Gx + o - 1)) +
+             VLOAD(wy + o - ws) * recon_value(VLOAD(Gy + o - ws));
+  VSTORE(s, b + o);
 }
 
-// 1 / diag(A) for Jacobi smoothing; 0 for a pixel that no term touches.
-__kernel void recon_diag_inv(__global const float4* wp, __global const float4* wx,
-                             __global const float4* wy, int w, int h, __global float4* dinv) {
-  int i = get_global_id(0);
-  if (i >= w * h) return;
-  int px = i % w, py = i / w;
-  float4 d = wp[i] + wx[i] + wy[i];
-  if (px > 0) d += wx[i - 1];
-  if (py > 0) d += wy[i - w];
-  dinv[i] = (float4)(d.x > 0.0f ? 1.0f / d.x : 0.0f, d.y > 0.0f ? 1.0f / d.y : 0.0f,
-                     d.z > 0.0f ? 1.0f / d.z : 0.0f, 0.0f);
+// 1 / diag(A) for Jacobi smoothing; 0 for a pixel that no term touches (and the gap).
+__kernel void recon_diag_inv(__global const float* wp, __global const float* wx,
+                             __global const float* wy, int ws, int h, __global float* dinv) {
+  RECON_CHUNK(o, c, ws, h)
+  floatv d = VLOAD(wp + o) + VLOAD(wx + o) + VLOAD(wy + o) + VLOAD(wx + o - 1) +
+             VLOAD(wy + o - ws);
+  VSTORE(select((floatv)(0.0f), 1.0f / d, d > 0.0f), dinv + o);
 }
 
-// Per group: the objective sum of |alpha (x - P)| + |dx x - Gx| + |dy x - Gy| over present terms
-// (squared terms when l2 != 0). Global size = groups * RECON_LOCAL.
-__kernel void recon_energy(__global const float4* x, __global const float4* P,
-                           __global const float4* Gx, __global const float4* Gy,
-                           __global const float4* mp, __global const float4* mx,
-                           __global const float4* my, float alpha, int l2, int w, int h,
-                           __global float4* partial) {
-  __local float4 scratch[RECON_LOCAL];
-  float4 s = (float4)(0.0f);
-  RECON_FOR_SHARE(i, w * h) {
-    int px = i % w, py = i / w;
-    float4 xi = x[i];
-    float4 ep = alpha * (xi - P[i]);
-    float4 ex = px + 1 < w ? x[i + 1] - xi - Gx[i] : (float4)(0.0f);
-    float4 ey = py + 1 < h ? x[i + w] - xi - Gy[i] : (float4)(0.0f);
-    if (l2) {
-      s += mp[i] * ep * ep + mx[i] * ex * ex + my[i] * ey * ey;
-    } else {
-      s += mp[i] * fabs(ep) + mx[i] * fabs(ex) + my[i] * fabs(ey);
-    }
+// Per group and channel: the objective sum of |alpha (x - P)| + |dx x - Gx| + |dy x - Gy| over
+// present terms (squared terms when l2 != 0). Reducing launch (grid.h).
+__kernel void recon_energy(__global const float* x, __global const float* P,
+                           __global const float* Gx, __global const float* Gy, float alpha,
+                           int l2, int ws, int h, __global float* partial) {
+  __local float scratch[RECON_LOCAL];
+  floatv s = (floatv)(0.0f);
+  RECON_FOR_SHARE(o, c, ws, h) {
+    floatv xi = VLOAD(x + o);
+    floatv ep = recon_value(alpha * (xi - VLOAD(P + o)));
+    floatv ex = recon_value(VLOAD(x + o + 1) - xi - VLOAD(Gx + o));
+    floatv ey = recon_value(VLOAD(x + o + ws) - xi - VLOAD(Gy + o));
+    s += l2 ? ep * ep + ex * ex + ey * ey : fabs(ep) + fabs(ex) + fabs(ey);
   }
-  float4 total = recon_group_sum(s, scratch);
-  if (get_local_id(0) == 0) partial[get_group_id(0)] = total;
+  RECON_WRITE_PARTIAL(s, scratch, partial)
 }
 
-// float4 planes -> interleaved RGB. The solver never produces non-finite values, but the output
-// must be finite whatever happened: fall back to the primal (itself finite after packing).
-__kernel void recon_unpack(__global const float4* x, __global const float4* P, int n,
-                           __global float* rgb, __global uint* nonfinite) {
-  int i = get_global_id(0);
-  if (i >= n) return;
-  float4 v = x[i], p = P[i];
-  float c[3] = {v.x, v.y, v.z}, f[3] = {p.x, p.y, p.z};
-  for (int k = 0; k < 3; ++k) {
-    if (!isfinite(c[k])) {
-      c[k] = f[k];
+// Planes -> interleaved RGB. The solver never produces non-finite values, but the output must be
+// finite whatever happened: fall back to the primal, else 0. 2D launch over pixels.
+__kernel void recon_unpack(__global const float* x, __global const float* P, int w, int h,
+                           int ws, __global float* rgb, __global uint* nonfinite) {
+  int px = get_global_id(0), py = get_global_id(1);
+  if (px >= w || py >= h) return;
+  int i = py * w + px;
+  for (int c = 0; c < 3; ++c) {
+    int e = recon_plane(c, ws, h) + py * ws + px;
+    float v = x[e];
+    if (!isfinite(v)) {
+      float p = P[e];
+      v = isfinite(p) ? p : 0.0f;
       atomic_inc(nonfinite);
     }
-    rgb[3 * i + k] = c[k];
+    rgb[3 * i + c] = v;
   }
 }

@@ -1,0 +1,36 @@
+#include "recon/planes.h"
+
+#include <cstdlib>
+#include <cstring>
+
+#include "util/error.h"
+
+namespace gdr {
+
+Planes::Planes(int width, int height, int vec_width)
+    : w(width), h(height), ws((width + kAlign - 1) / kAlign * kAlign), vec(vec_width) {}
+
+PlaneBuffer Planes::buffer(Context& ctx) const {
+  PlaneBuffer b(ctx, floats());
+  b.fill(0.0f);
+  return b;
+}
+
+int recon_vector_width(const Context& ctx) {
+  if (const char* v = std::getenv("GDR_RECON_VECTOR"); v && *v) {
+    if (std::strcmp(v, "1") == 0) return 1;
+    if (std::strcmp(v, "16") == 0) return 16;
+    throw Error(std::string("GDR_RECON_VECTOR must be 1 or 16, not '") + v + "'");
+  }
+  return ctx.is_cpu() ? 16 : 1;
+}
+
+std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file) {
+  Defines defines;
+  const int vec = recon_vector_width(ctx);
+  defines["RECON_VEC"] = std::to_string(vec);
+  if (vec > 1) defines["RECON_CONTIGUOUS"] = "";
+  return ctx.program(file, defines);
+}
+
+}  // namespace gdr
