@@ -8,6 +8,12 @@ namespace {
 constexpr float kOmega = 0.8f;      // damped Jacobi, the usual choice for 5-point stencils
 constexpr int kCoarsestSweeps = 8;  // coarse levels are dominated by the screening term
 constexpr int kCoarsestPixels = 64;
+
+// Work items per plane of the fine-to-coarse kernels: one per MG_ITEM_COLS fine columns
+// (kernels/recon/multigrid.cl) of each pair of fine rows.
+size_t transfer_items(const Planes& fine, const Planes& coarse) {
+  return size_t(fine.ws) / size_t(std::max(2, fine.vec)) * size_t(coarse.h);
+}
 }  // namespace
 
 Multigrid::Multigrid(Context& ctx, const Planes& fine)
@@ -51,7 +57,7 @@ void Multigrid::setup(const LinearSystem& sys) {
       const Planes& f = levels_[i - 1]->grid;
       Level& fl = *levels_[i - 1];
       coarsen_.args(*fl.wp, *fl.wx, *fl.wy, f.ws, f.h, *l.wp, *l.wx, *l.wy, g.ws, g.h)
-          .run_2d(size_t(g.ws), size_t(3 * g.h), 64, 1);
+          .run_2d(transfer_items(f, g), 3, 64, 1);
     }
     diag_.args(*l.wp, *l.wx, *l.wy, g.ws, g.h, l.dinv);
     g.run(diag_);
@@ -76,10 +82,8 @@ PlaneBuffer& Multigrid::apply(PlaneBuffer& r) {
     Level& l = *levels_[i];
     Level& c = *levels_[i + 1];
     const Planes &f = l.grid, &g = c.grid;
-    // Items of a coarse row: kernels/recon/multigrid.cl's MG_ITEM_COLS fine columns each.
-    const size_t per_row = size_t(f.ws) / size_t(std::max(2, f.vec));
     restrict_.args(*l.b, l.dinv, kOmega, *l.wp, *l.wx, *l.wy, f.ws, f.h, *c.b, g.ws, g.h)
-        .run_2d(per_row * size_t(g.h), 3, 64, 1);
+        .run_2d(transfer_items(f, g), 3, 64, 1);
   }
   Level& coarsest = *levels_[last];
   const Planes& cg = coarsest.grid;

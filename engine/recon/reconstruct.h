@@ -23,7 +23,8 @@ struct ReconSettings {
   float l1_reg = 0.05f;
   // Relative residual |b - Ax| / |b| at which a linear solve stops early (0: iteration cap only
   // for CG; the fast solver then stops at 1e-4 for L2). The fast solver judges each warm-started
-  // L1 round against the round's first residual instead (default target 0.4).
+  // L1 round against the round's first residual instead (default target 0.15, and at most 3 PCG
+  // iterations per round).
   double tolerance = 0.0;
   // CG: baseline conjugate gradients on the normal equations. Fast: multigrid-preconditioned CG,
   // and for L2 with every input finite a direct DCT solve (the PCG then only checks it).

@@ -10,31 +10,31 @@
 #define MG_ITEM_COLS (RECON_VEC == 1 ? 2 : RECON_VEC)
 
 // Coarse weights of P^T A P: wp sums the 2x2 children; an edge sums the fine edges it crosses.
-// Edges leaving the image come out zero because the fine ones there are. 2D launch over (coarse
-// column < wsc, channel * hc + coarse row).
+// Edges leaving the image come out zero because the fine ones there are. Launched like
+// mg_restrict_presmoothed.
 __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
                          __global const float* wyf, int wsf, int hf, __global float* wpc,
                          __global float* wxc, __global float* wyc, int wsc, int hc) {
-  int cx = get_global_id(0), row = get_global_id(1);
-  if (cx >= wsc || row >= 3 * hc) return;
-  int c = row / hc, cy = row % hc;
-  float sp = 0.0f, sx = 0.0f, sy = 0.0f;
-  for (int dy = 0; dy < 2; ++dy) {
-    // Row 2 cy + 1 may be the gap row below the plane (all zero).
-    int fy = 2 * cy + dy;
-    for (int dx = 0; dx < 2; ++dx) {
-      int fx = 2 * cx + dx;
-      if (fx >= wsf) break;
-      int f = recon_plane(c, wsf, hf) + fy * wsf + fx;
-      sp += wpf[f];
-      if (dx == 1) sx += wxf[f];
-      if (dy == 1) sy += wyf[f];
-    }
-  }
-  int e = recon_plane(c, wsc, hc) + cy * wsc + cx;
-  wpc[e] = sp;
-  wxc[e] = sx;
-  wyc[e] = sy;
+  const int c = get_global_id(1);
+  const int per_row = wsf / MG_ITEM_COLS;
+  const int k = get_global_id(0);
+  if (k >= per_row * hc) return;
+  const int cy = k / per_row, j = k % per_row;
+  // Fine rows 2 cy and 2 cy + 1 (the latter may be the gap row below the plane: all zero).
+  const int f = recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
+  const int e = recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
+#if RECON_VEC == 16
+  float16 p = vload16(0, wpf + f) + vload16(0, wpf + f + wsf);
+  float16 x = vload16(0, wxf + f) + vload16(0, wxf + f + wsf);
+  float16 y = vload16(0, wyf + f + wsf);
+  vstore8(p.even + p.odd, 0, wpc + e);
+  vstore8(x.odd, 0, wxc + e);
+  vstore8(y.even + y.odd, 0, wyc + e);
+#else
+  wpc[e] = wpf[f] + wpf[f + 1] + wpf[f + wsf] + wpf[f + wsf + 1];
+  wxc[e] = wxf[f + 1] + wxf[f + wsf + 1];
+  wyc[e] = wyf[f + wsf] + wyf[f + wsf + 1];
+#endif
 }
 
 // x = omega D^-1 b: one Jacobi sweep from a zero guess.
