@@ -10,14 +10,15 @@ class CgSolver {
   CgSolver(Context& ctx, int width, int height);
   // Improves sys.x in place (warm start) for at most max_iterations; stops early once the
   // relative residual is <= tolerance (when tolerance > 0): |r| / |b|, or |r| / |r0| with
-  // relative_to_start. The outcome's residual is always |r| / |b|.
+  // relative_to_start. The outcome's residual is always |r| / |b|. With residual_ready, sys.r
+  // already holds b - A x (else it is computed here).
   SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
-                     bool relative_to_start = false);
+                     bool relative_to_start = false, bool residual_ready = false);
 
  private:
   Planes grid_;
   DeviceDots dots_;
-  PlaneBuffer r_, p_, q_;
+  PlaneBuffer p_, q_;
   Kernel apply_, residual_, update_xr_, update_p_;
 };
 

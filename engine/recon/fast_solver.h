@@ -1,5 +1,6 @@
-// The fast solver: conjugate gradients preconditioned by a multigrid V-cycle, with the operator
-// apply fused with its dot product and the x/r update fused with the residual norm.
+// The fast solver: conjugate gradients preconditioned by a multigrid V-cycle. Each iteration is
+// three fused passes over the image and the V-cycle: p update with q = A p and p * q, the x/r
+// update with r * r, and z = M r with r * z.
 #pragma once
 #include "recon/multigrid.h"
 
@@ -12,15 +13,15 @@ class FastSolver {
   // (The multigrid levels are built at the first iteration that needs them.)
   void setup(const LinearSystem&) { mg_ready_ = false; }
   SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
-                     bool relative_to_start = false);
+                     bool relative_to_start = false, bool residual_ready = false);
 
  private:
   Planes grid_;
   DeviceDots dots_;
   Multigrid mg_;
   bool mg_ready_ = false;
-  PlaneBuffer r_, p_, q_;
-  Kernel apply_dot_, residual_, update_xr_dot_, update_p_;
+  PlaneBuffer p_[2], q_;
+  Kernel residual_, update_p_apply_dot_, update_xr_dot_;
 };
 
 }  // namespace gdr

@@ -18,11 +18,11 @@ size_t transfer_items(const Planes& fine, const Planes& coarse) {
 
 Multigrid::Multigrid(Context& ctx, const Planes& fine)
     : coarsen_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_coarsen")),
-      diag_(recon_program(ctx, "recon/setup.cl")->kernel("recon_diag_inv")),
       jacobi_zero_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_jacobi_zero")),
       jacobi_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_jacobi")),
       restrict_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_restrict_presmoothed")),
-      correct_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_correct")) {
+      correct_smooth_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_correct_smooth")),
+      correct_smooth_dot_(recon_program(ctx, "recon/multigrid.cl")->kernel("mg_correct_smooth_dot")) {
   Planes g = fine;
   for (;;) {
     auto l = std::make_unique<Level>(g);
@@ -30,13 +30,14 @@ Multigrid::Multigrid(Context& ctx, const Planes& fine)
       l->own_wp = g.buffer(ctx);
       l->own_wx = g.buffer(ctx);
       l->own_wy = g.buffer(ctx);
+      l->own_dinv = g.buffer(ctx);
       l->own_b = g.buffer(ctx);
       l->wp = &l->own_wp;
       l->wx = &l->own_wx;
       l->wy = &l->own_wy;
+      l->dinv = &l->own_dinv;
       l->b = &l->own_b;
     }
-    l->dinv = g.buffer(ctx);
     l->x = g.buffer(ctx);
     l->tmp = g.buffer(ctx);
     levels_.push_back(std::move(l));
@@ -50,53 +51,52 @@ void Multigrid::setup(const LinearSystem& sys) {
   fine.wp = sys.wp;
   fine.wx = sys.wx;
   fine.wy = sys.wy;
-  for (size_t i = 0; i < levels_.size(); ++i) {
-    Level& l = *levels_[i];
-    const Planes& g = l.grid;
-    if (i > 0) {
-      const Planes& f = levels_[i - 1]->grid;
-      Level& fl = *levels_[i - 1];
-      coarsen_.args(*fl.wp, *fl.wx, *fl.wy, f.ws, f.h, *l.wp, *l.wx, *l.wy, g.ws, g.h)
-          .run_2d(transfer_items(f, g), 3, 64, 1);
-    }
-    diag_.args(*l.wp, *l.wx, *l.wy, g.ws, g.h, l.dinv);
-    g.run(diag_);
+  fine.dinv = sys.dinv;
+  for (size_t i = 1; i < levels_.size(); ++i) {
+    Level &l = *levels_[i], &f = *levels_[i - 1];
+    coarsen_.args(*f.wp, *f.wx, *f.wy, f.grid.ws, f.grid.h, *l.wp, *l.wx, *l.wy, *l.dinv, l.grid.ws,
+                  l.grid.h)
+        .run_2d(transfer_items(f.grid, l.grid), 3, 64, 1);
   }
 }
 
 void Multigrid::smooth(Level& l, int sweeps) {
   const Planes& g = l.grid;
   for (int s = 0; s < sweeps; ++s) {
-    jacobi_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, l.dinv, kOmega, g.ws, g.h, l.tmp);
+    jacobi_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, *l.dinv, kOmega, g.ws, g.h, l.tmp);
     g.run(jacobi_);
     std::swap(l.x, l.tmp);
   }
 }
 
-PlaneBuffer& Multigrid::apply(PlaneBuffer& r) {
-  // One Jacobi sweep before and one after the coarse correction on every level; the one before
-  // is fused with the residual and restriction.
+PlaneBuffer& Multigrid::apply(PlaneBuffer& r, DeviceDots& dots, int slot) {
   levels_[0]->b = &r;
   const size_t last = levels_.size() - 1;
   for (size_t i = 0; i < last; ++i) {
     Level& l = *levels_[i];
     Level& c = *levels_[i + 1];
     const Planes &f = l.grid, &g = c.grid;
-    restrict_.args(*l.b, l.dinv, kOmega, *l.wp, *l.wx, *l.wy, f.ws, f.h, *c.b, g.ws, g.h)
+    restrict_.args(*l.b, *l.dinv, kOmega, *l.wp, *l.wx, *l.wy, f.ws, f.h, *c.b, g.ws, g.h)
         .run_2d(transfer_items(f, g), 3, 64, 1);
   }
   Level& coarsest = *levels_[last];
   const Planes& cg = coarsest.grid;
-  jacobi_zero_.args(*coarsest.b, coarsest.dinv, kOmega, cg.ws, cg.h, coarsest.x);
+  jacobi_zero_.args(*coarsest.b, *coarsest.dinv, kOmega, cg.ws, cg.h, coarsest.x);
   cg.run(jacobi_zero_);
   smooth(coarsest, kCoarsestSweeps - 1);
   for (size_t i = last; i-- > 0;) {
     Level& l = *levels_[i];
-    Level& c = *levels_[i + 1];
-    correct_.args(*l.b, l.dinv, kOmega, c.x, c.grid.ws, c.grid.h, l.grid.ws, l.grid.h, l.x);
-    l.grid.run(correct_);
-    smooth(l, 1);
+    const Planes &f = l.grid, &g = levels_[i + 1]->grid;
+    Kernel& k = i == 0 ? correct_smooth_dot_ : correct_smooth_;
+    k.args(*l.b, *l.dinv, kOmega, *l.wp, *l.wx, *l.wy, levels_[i + 1]->x, g.ws, g.h, f.ws, f.h, l.x);
+    if (i == 0) {
+      k.set_arg(12, dots.partial());
+      dots.reduce(k, f, slot);
+    } else {
+      f.run(k);
+    }
   }
+  if (last == 0) dots.dot(r, coarsest.x, coarsest.grid, slot);
   return levels_[0]->x;
 }
 

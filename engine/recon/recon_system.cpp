@@ -21,8 +21,10 @@ ReconSystem::ReconSystem(Context& ctx, int width, int height)
       wp_(grid_.buffer(ctx)),
       wx_(grid_.buffer(ctx)),
       wy_(grid_.buffer(ctx)),
+      dinv_(grid_.buffer(ctx)),
       b_(grid_.buffer(ctx)),
       x_(grid_.buffer(ctx)),
+      r_(grid_.buffer(ctx)),
       primal_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
       dx_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
       dy_in_(ctx, size_t(width) * height * 3, CL_MEM_READ_ONLY),
@@ -57,15 +59,17 @@ void ReconSystem::load(const std::vector<float>& primal_rgb, const std::vector<f
   primal_rms_ = std::sqrt(std::max(0.0, m) / (double(grid_.w) * grid_.h));
 }
 
-LinearSystem ReconSystem::system() { return LinearSystem{grid_, &wp_, &wx_, &wy_, &b_, &x_}; }
+LinearSystem ReconSystem::system() {
+  return LinearSystem{grid_, &wp_, &wx_, &wy_, &dinv_, &b_, &x_, &r_};
+}
 
 void ReconSystem::set_l2_weights(float alpha) {
-  weights_l2_.args(P_, Gx_, Gy_, alpha * alpha, grid_.ws, grid_.h, wp_, wx_, wy_);
+  weights_l2_.args(P_, Gx_, Gy_, alpha * alpha, grid_.ws, grid_.h, wp_, wx_, wy_, dinv_);
   grid_.run(weights_l2_);
 }
 
 void ReconSystem::set_l1_weights(float alpha, float reg) {
-  weights_l1_.args(x_, P_, Gx_, Gy_, alpha, reg, grid_.ws, grid_.h, wp_, wx_, wy_);
+  weights_l1_.args(x_, P_, Gx_, Gy_, alpha, reg, grid_.ws, grid_.h, wp_, wx_, wy_, dinv_, b_, r_);
   grid_.run(weights_l1_);
 }
 

@@ -47,13 +47,13 @@ class Solver {
       cg_ = std::make_unique<CgSolver>(ctx, w, h);
     }
   }
+  // Solves the system of `problem` as its weights and b (and with residual_ready, r) stand.
   SolveOutcome solve(ReconSystem& problem, int max_iterations, double tolerance,
-                     bool relative_to_start = false, bool rhs_ready = false) {
-    if (!rhs_ready) problem.build_rhs();
+                     bool relative_to_start = false, bool residual_ready = false) {
     LinearSystem sys = problem.system();
-    if (!fast_) return cg_->solve(sys, max_iterations, tolerance, relative_to_start);
+    if (!fast_) return cg_->solve(sys, max_iterations, tolerance, relative_to_start, residual_ready);
     fast_solver_->setup(sys);
-    return fast_solver_->solve(sys, max_iterations, tolerance, relative_to_start);
+    return fast_solver_->solve(sys, max_iterations, tolerance, relative_to_start, residual_ready);
   }
 
  private:
@@ -123,7 +123,7 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
       if (!ws.dct) ws.dct = std::make_unique<DctSolver>(ctx, width, height);
       ws.dct->solve(problem.system(), settings.alpha);
     }
-    SolveOutcome o = solver.solve(problem, cap, l2_tol, false, true);
+    SolveOutcome o = solver.solve(problem, cap, l2_tol);
     result.iterations = o.iterations;
     result.residual = o.residual;
   } else {
@@ -140,7 +140,7 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
       if (reg < 1e-30f) reg = 1e-30f;
       problem.set_l1_weights(settings.alpha, reg);
       SolveOutcome o = solver.solve(problem, fast ? std::min(cap, kFastL1RoundIterations) : cap,
-                                    l1_tol, fast);
+                                    l1_tol, fast, true);
       result.iterations += o.iterations;
       result.residual = o.residual;
     }

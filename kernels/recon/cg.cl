@@ -36,3 +36,29 @@ __kernel void cg_update_p(__global float* p, __global const float* z,
   float b = recon_ratio(scal, num, den, c);
   VSTORE(VLOAD(z + o) + b * VLOAD(p + o), p + o);
 }
+
+// p = z + b p_old (b = scal[num] / scal[den]), q = A p and the partial sums of p * q in one pass
+// (reducing launch). p at the neighbours is recomputed from z and p_old, so p and p_old must be
+// different buffers.
+__kernel void cg_update_p_apply_dot(__global const float* p_old, __global const float* z,
+                                    __global const float4* scal, int num, int den,
+                                    __global const float* wp, __global const float* wx,
+                                    __global const float* wy, int ws, int h, __global float* p,
+                                    __global float* q, __global float* partial) {
+  __local float scratch[RECON_LOCAL];
+  floatv s = (floatv)(0.0f);
+  RECON_FOR_SHARE(o, c, ws, h) {
+    float b = recon_ratio(scal, num, den, c);
+#define CG_P_AT(k) (VLOAD(z + (k)) + b * VLOAD(p_old + (k)))
+    floatv pi = CG_P_AT(o);
+    floatv qi = VLOAD(wp + o) * pi + VLOAD(wx + o) * (pi - CG_P_AT(o + 1)) +
+                VLOAD(wx + o - 1) * (pi - CG_P_AT(o - 1)) +
+                VLOAD(wy + o) * (pi - CG_P_AT(o + ws)) +
+                VLOAD(wy + o - ws) * (pi - CG_P_AT(o - ws));
+#undef CG_P_AT
+    VSTORE(pi, p + o);
+    VSTORE(qi, q + o);
+    s += pi * qi;
+  }
+  RECON_WRITE_PARTIAL(s, scratch, partial)
+}

@@ -3,9 +3,10 @@
 //   element (c, x, y) = ws * (1 + c * (h + 1) + y) + x,
 // where the row stride ws is the width rounded up to RECON_ALIGN. The columns past the width and
 // the rows between planes (one above each plane, one below the last) are gap: every term weight is
-// zero there and every vector stays zero, so the operator needs no border tests, a pixel's left
-// neighbour on the row above is harmless, and the three channels never mix. (Absent inputs,
-// including the gap, are stored as NaN: see recon_pack.)
+// zero there, so the operator needs no border tests, a pixel's left neighbour on the row above is
+// harmless, and the three channels never mix. Vectors start at zero in the gap and stay finite
+// (the multigrid correction may leave values there, which zero weights keep away from the pixels).
+// Absent inputs, including the gap, are stored as NaN: see recon_pack.
 //
 // A work item takes a chunk of RECON_VEC consecutive floats of one plane. On CPU devices chunks are
 // 16 wide and written as float16 vector operations (PoCL does not vectorise these kernels across

@@ -10,30 +10,42 @@
 #define MG_ITEM_COLS (RECON_VEC == 1 ? 2 : RECON_VEC)
 
 // Coarse weights of P^T A P: wp sums the 2x2 children; an edge sums the fine edges it crosses.
-// Edges leaving the image come out zero because the fine ones there are. Launched like
+// Edges leaving the image come out zero because the fine ones there are. Also the coarse
+// 1 / diag, with the left and upper coarse edges summed again here. Launched like
 // mg_restrict_presmoothed.
 __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
                          __global const float* wyf, int wsf, int hf, __global float* wpc,
-                         __global float* wxc, __global float* wyc, int wsc, int hc) {
+                         __global float* wxc, __global float* wyc, __global float* dinvc,
+                         int wsc, int hc) {
   const int c = get_global_id(1);
   const int per_row = wsf / MG_ITEM_COLS;
   const int k = get_global_id(0);
   if (k >= per_row * hc) return;
   const int cy = k / per_row, j = k % per_row;
-  // Fine rows 2 cy and 2 cy + 1 (the latter may be the gap row below the plane: all zero).
+  // Fine rows 2 cy and 2 cy + 1 (the latter may be the gap row below the plane: all zero); row
+  // 2 cy - 1 holds the edges to the coarse row above (the gap row above the plane for cy = 0).
   const int f = recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
   const int e = recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
 #if RECON_VEC == 16
   float16 p = vload16(0, wpf + f) + vload16(0, wpf + f + wsf);
   float16 x = vload16(0, wxf + f) + vload16(0, wxf + f + wsf);
-  float16 y = vload16(0, wyf + f + wsf);
-  vstore8(p.even + p.odd, 0, wpc + e);
-  vstore8(x.odd, 0, wxc + e);
-  vstore8(y.even + y.odd, 0, wyc + e);
+  float16 xl = vload16(0, wxf + f - 2) + vload16(0, wxf + f + wsf - 2);
+  float16 y = vload16(0, wyf + f + wsf), yu = vload16(0, wyf + f - wsf);
+  float8 pc = p.even + p.odd, xc = x.odd, yc = y.even + y.odd;
+  float8 d = pc + xc + yc + xl.odd + yu.even + yu.odd;
+  vstore8(pc, 0, wpc + e);
+  vstore8(xc, 0, wxc + e);
+  vstore8(yc, 0, wyc + e);
+  vstore8(select((float8)(0.0f), 1.0f / d, d > 0.0f), 0, dinvc + e);
 #else
-  wpc[e] = wpf[f] + wpf[f + 1] + wpf[f + wsf] + wpf[f + wsf + 1];
-  wxc[e] = wxf[f + 1] + wxf[f + wsf + 1];
-  wyc[e] = wyf[f + wsf] + wyf[f + wsf + 1];
+  float pc = wpf[f] + wpf[f + 1] + wpf[f + wsf] + wpf[f + wsf + 1];
+  float xc = wxf[f + 1] + wxf[f + wsf + 1];
+  float yc = wyf[f + wsf] + wyf[f + wsf + 1];
+  float d = pc + xc + yc + wxf[f - 1] + wxf[f + wsf - 1] + wyf[f - wsf] + wyf[f - wsf + 1];
+  wpc[e] = pc;
+  wxc[e] = xc;
+  wyc[e] = yc;
+  dinvc[e] = d > 0.0f ? 1.0f / d : 0.0f;
 #endif
 }
 
@@ -99,19 +111,68 @@ __kernel void mg_restrict_presmoothed(__global const float* b, __global const fl
 #endif
 }
 
-// y = x0 + P xc: the coarse correction added to the pre-smoothed estimate; an mg_jacobi sweep
-// follows. (Fusing the two, recomputing y at the neighbours, measured slower on PoCL.)
-__kernel void mg_correct(__global const float* b, __global const float* dinv, float omega,
-                         __global const float* xc, int wsc, int hc, int wsf, int hf,
-                         __global float* y) {
-  RECON_CHUNK(o, c, wsf, hf)
-  const int per_row = wsf / RECON_VEC;
-  const int fy = get_global_id(0) / per_row, j = get_global_id(0) % per_row;
-  const int e = recon_plane(c, wsc, hc) + (fy / 2) * wsc + (j * RECON_VEC) / 2;
+// z = y + omega D^-1 (b - A y) for y = x0 + P xc: the coarse correction added to the pre-smoothed
+// estimate, then one Jacobi sweep, with y recomputed at the neighbours instead of stored. `rel`
+// is the chunk's offset in its plane (row fy, column fx).
+inline floatv mg_correct_smooth_at(__global const float* b, __global const float* dinv,
+                                   float omega, __global const float* wp,
+                                   __global const float* wx, __global const float* wy,
+                                   __global const float* xc, int wsc, int hc, int c, int rel,
+                                   int o, int ws) {
+  const int fy = rel / ws, fx = rel % ws;
+  // Coarse rows of fine rows fy - 1, fy, fy + 1 (floor division; row -1 is the gap row above).
+  const int row0 = recon_plane(c, wsc, hc) + (fx >> 1);
+  const int e = row0 + (fy >> 1) * wsc;
+  const int e_up = row0 + (((fy + 1) >> 1) - 1) * wsc;
+  const int e_down = row0 + ((fy + 1) >> 1) * wsc;
 #if RECON_VEC == 16
-  float16 up = shuffle(vload8(0, xc + e), (uint16)(0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7));
+  // Fine columns fx + k (k < 16) have coarse column fx / 2 + k / 2; shifted by one either way,
+  // (k + 1) / 2 from one coarse column further left or from the same one.
+  const uint16 same = (uint16)(0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7);
+  const uint16 shifted = (uint16)(0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8);
+  floatv up_c = shuffle(vload8(0, xc + e), same);
+  floatv up_l = shuffle(vload16(0, xc + e - 1), shifted);
+  floatv up_r = shuffle(vload16(0, xc + e), shifted);
+  floatv up_u = shuffle(vload8(0, xc + e_up), same);
+  floatv up_d = shuffle(vload8(0, xc + e_down), same);
 #else
-  float up = xc[e];
+  // Column fx - 1 = -1 reads the coarse row's element before it (finite, weight zero).
+  floatv up_c = xc[e], up_u = xc[e_up], up_d = xc[e_down];
+  floatv up_l = xc[e + ((fx + 1) >> 1) - 1 - (fx >> 1)], up_r = xc[e + ((fx + 1) >> 1) - (fx >> 1)];
 #endif
-  VSTORE(mg_x0(b, dinv, omega, o) + up, y + o);
+  floatv y = mg_x0(b, dinv, omega, o) + up_c;
+  floatv ay = VLOAD(wp + o) * y + VLOAD(wx + o) * (y - mg_x0(b, dinv, omega, o + 1) - up_r) +
+              VLOAD(wx + o - 1) * (y - mg_x0(b, dinv, omega, o - 1) - up_l) +
+              VLOAD(wy + o) * (y - mg_x0(b, dinv, omega, o + ws) - up_d) +
+              VLOAD(wy + o - ws) * (y - mg_x0(b, dinv, omega, o - ws) - up_u);
+  return y + omega * VLOAD(dinv + o) * (VLOAD(b + o) - ay);
+}
+
+// The post-smoothed correction of one level (see mg_correct_smooth_at).
+__kernel void mg_correct_smooth(__global const float* b, __global const float* dinv, float omega,
+                                __global const float* wp, __global const float* wx,
+                                __global const float* wy, __global const float* xc, int wsc,
+                                int hc, int ws, int h, __global float* z) {
+  RECON_CHUNK(o, c, ws, h)
+  VSTORE(mg_correct_smooth_at(b, dinv, omega, wp, wx, wy, xc, wsc, hc, c,
+                              o - recon_plane(c, ws, h), o, ws),
+         z + o);
+}
+
+// The same on the finest level, with the partial sums of b * z (r * z for the PCG; reducing
+// launch).
+__kernel void mg_correct_smooth_dot(__global const float* b, __global const float* dinv,
+                                    float omega, __global const float* wp,
+                                    __global const float* wx, __global const float* wy,
+                                    __global const float* xc, int wsc, int hc, int ws, int h,
+                                    __global float* z, __global float* partial) {
+  __local float scratch[RECON_LOCAL];
+  floatv s = (floatv)(0.0f);
+  RECON_FOR_SHARE(o, c, ws, h) {
+    floatv zi = mg_correct_smooth_at(b, dinv, omega, wp, wx, wy, xc, wsc, hc, c,
+                                     o - recon_plane(c, ws, h), o, ws);
+    VSTORE(zi, z + o);
+    s += VLOAD(b + o) * zi;
+  }
+  RECON_WRITE_PARTIAL(s, scratch, partial)
 }

@@ -35,30 +35,62 @@ __kernel void recon_pack(__global const float* primal, __global const float* dx,
   if (bad) atomic_add(nonfinite, bad);
 }
 
-// L2: every present term has weight 1 (alpha^2 for the primal term).
-__kernel void recon_weights_l2(__global const float* P, __global const float* Gx,
-                               __global const float* Gy, float alpha2, int ws, int h,
-                               __global float* wp, __global float* wx, __global float* wy) {
-  RECON_CHUNK(o, c, ws, h)
-  VSTORE(recon_weight((floatv)(alpha2), VLOAD(P + o)), wp + o);
-  VSTORE(recon_weight((floatv)(1.0f), VLOAD(Gx + o)), wx + o);
-  VSTORE(recon_weight((floatv)(1.0f), VLOAD(Gy + o)), wy + o);
+// 1 / diag(A) from the five weights touching a pixel, for Jacobi smoothing; 0 where no term
+// touches it (and in the gap).
+inline floatv recon_diag_inv(floatv wp, floatv wx, floatv wy, floatv w_left, floatv w_up) {
+  floatv d = wp + wx + wy + w_left + w_up;
+  return select((floatv)(0.0f), 1.0f / d, d > 0.0f);
 }
 
-// L1 by iteratively reweighted least squares: a term with residual e gets weight 1/(|e| + reg),
-// so that w e^2 ~ |e| at the current estimate x.
+// L2: every present term has weight 1 (alpha^2 for the primal term); and 1 / diag(A).
+__kernel void recon_weights_l2(__global const float* P, __global const float* Gx,
+                               __global const float* Gy, float alpha2, int ws, int h,
+                               __global float* wp, __global float* wx, __global float* wy,
+                               __global float* dinv) {
+  RECON_CHUNK(o, c, ws, h)
+  const floatv one = (floatv)(1.0f);
+  floatv wpi = recon_weight((floatv)(alpha2), VLOAD(P + o));
+  floatv wxi = recon_weight(one, VLOAD(Gx + o)), wyi = recon_weight(one, VLOAD(Gy + o));
+  VSTORE(wpi, wp + o);
+  VSTORE(wxi, wx + o);
+  VSTORE(wyi, wy + o);
+  VSTORE(recon_diag_inv(wpi, wxi, wyi, recon_weight(one, VLOAD(Gx + o - 1)),
+                        recon_weight(one, VLOAD(Gy + o - ws))),
+         dinv + o);
+}
+
+// The IRLS weight of a term with residual e: 1/(|e| + reg), so that w e^2 ~ |e| at the current
+// estimate; 0 for an absent term (g NaN).
+inline floatv recon_l1_weight(floatv e, floatv g, float reg) {
+  return recon_weight(1.0f / (fabs(e) + reg), g);
+}
+
+// L1 by iteratively reweighted least squares: the weights from the current estimate x, and
+// everything a solve starts from: b, 1 / diag(A) and r = b - A x (the left and upper neighbours'
+// edge weights recomputed here rather than read back).
 __kernel void recon_weights_l1(__global const float* x, __global const float* P,
                                __global const float* Gx, __global const float* Gy, float alpha,
                                float reg, int ws, int h, __global float* wp,
-                               __global float* wx, __global float* wy) {
+                               __global float* wx, __global float* wy, __global float* dinv,
+                               __global float* b, __global float* r) {
   RECON_CHUNK(o, c, ws, h)
   floatv xi = VLOAD(x + o), p = VLOAD(P + o), gx = VLOAD(Gx + o), gy = VLOAD(Gy + o);
-  floatv ep = alpha * (xi - p);
-  floatv ex = VLOAD(x + o + 1) - xi - gx;
-  floatv ey = VLOAD(x + o + ws) - xi - gy;
-  VSTORE(recon_weight(alpha * alpha / (fabs(ep) + reg), p), wp + o);
-  VSTORE(recon_weight(1.0f / (fabs(ex) + reg), gx), wx + o);
-  VSTORE(recon_weight(1.0f / (fabs(ey) + reg), gy), wy + o);
+  floatv gl = VLOAD(Gx + o - 1), gu = VLOAD(Gy + o - ws);
+  floatv xr = VLOAD(x + o + 1), xl = VLOAD(x + o - 1), xd = VLOAD(x + o + ws), xu = VLOAD(x + o - ws);
+  floatv wpi = recon_weight(alpha * alpha / (fabs(alpha * (xi - p)) + reg), p);
+  floatv wxi = recon_l1_weight(xr - xi - gx, gx, reg);
+  floatv wyi = recon_l1_weight(xd - xi - gy, gy, reg);
+  floatv wl = recon_l1_weight(xi - xl - gl, gl, reg);
+  floatv wu = recon_l1_weight(xi - xu - gu, gu, reg);
+  floatv bi = wpi * recon_value(p) - wxi * recon_value(gx) - wyi * recon_value(gy) +
+              wl * recon_value(gl) + wu * recon_value(gu);
+  floatv ax = wpi * xi + wxi * (xi - xr) + wl * (xi - xl) + wyi * (xi - xd) + wu * (xi - xu);
+  VSTORE(wpi, wp + o);
+  VSTORE(wxi, wx + o);
+  VSTORE(wyi, wy + o);
+  VSTORE(recon_diag_inv(wpi, wxi, wyi, wl, wu), dinv + o);
+  VSTORE(bi, b + o);
+  VSTORE(bi - ax, r + o);
 }
 
 // b = Wp P + Dx^T Wx Gx + Dy^T Wy Gy, with (Dx^T v)(x) = v(x-1) - v(x).
@@ -73,15 +105,6 @@ __kernel void recon_rhs(__global const float* P, __global const float* Gx,
              VLOAD(wx + o - 1) * recon_value(VLOAD(Gx + o - 1)) +
              VLOAD(wy + o - ws) * recon_value(VLOAD(Gy + o - ws));
   VSTORE(s, b + o);
-}
-
-// 1 / diag(A) for Jacobi smoothing; 0 for a pixel that no term touches (and the gap).
-__kernel void recon_diag_inv(__global const float* wp, __global const float* wx,
-                             __global const float* wy, int ws, int h, __global float* dinv) {
-  RECON_CHUNK(o, c, ws, h)
-  floatv d = VLOAD(wp + o) + VLOAD(wx + o) + VLOAD(wy + o) + VLOAD(wx + o - 1) +
-             VLOAD(wy + o - ws);
-  VSTORE(select((floatv)(0.0f), 1.0f / d, d > 0.0f), dinv + o);
 }
 
 // Per group and channel: the objective sum of |alpha (x - P)| + |dx x - Gx| + |dy x - Gy| over

@@ -121,7 +121,9 @@ void solve_bench(benchmark::State& state, ReconNorm norm, ReconSettings::Solver 
   ReconSettings s;
   s.norm = norm;
   s.solver = solver;
-  ReconResult r;
+  // A first call outside the timing: programs and the kept workspace (allocated and first
+  // touched) are then ready, as in every call but the first of a render session.
+  ReconResult r = reconstruct(ctx, kW, kH, g.primal, g.dx, g.dy, s, nullptr);
   for (auto _ : state) r = reconstruct(ctx, kW, kH, g.primal, g.dx, g.dy, s, nullptr);
   state.counters["residual"] = r.residual;
   state.counters["energy"] = r.energy;
@@ -134,9 +136,9 @@ void BM_ReconL2Fast(benchmark::State& s) { solve_bench(s, ReconNorm::L2, ReconSe
 void BM_ReconL1Cg(benchmark::State& s) { solve_bench(s, ReconNorm::L1, ReconSettings::Solver::CG); }
 void BM_ReconL1Fast(benchmark::State& s) { solve_bench(s, ReconNorm::L1, ReconSettings::Solver::Fast); }
 BENCHMARK(BM_ReconL2Cg)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK(BM_ReconL2Fast)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+BENCHMARK(BM_ReconL2Fast)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(BM_ReconL1Cg)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK(BM_ReconL1Fast)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_ReconL1Fast)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 }  // namespace
 }  // namespace gdr

@@ -96,7 +96,7 @@ TEST(ReconDeferredTiming, RecordsKernelsAndMatchesBlockingRuns) {
   ReconResult deferred = reconstruct(ctx, g.w, g.h, g.primal, g.dx, g.dy, s, nullptr);
   EXPECT_FALSE(ctx.deferred_timing());
   EXPECT_EQ(stats.count("kernel_items/recon_pack"), size_t(g.w) * g.h);
-  EXPECT_GT(stats.count("kernel_items/recon_apply_dot"), 0u);
+  EXPECT_GT(stats.count("kernel_items/cg_update_p_apply_dot"), 0u);
   // 20 CG iterations with every launch waited on, then with deferred timing: same image.
   std::vector<float> images[2];
   for (int d = 0; d < 2; ++d) {
