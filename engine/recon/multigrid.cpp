@@ -5,7 +5,6 @@
 
 namespace gdr {
 namespace {
-constexpr float kOmega = 0.8f;      // damped Jacobi, the usual choice for 5-point stencils
 constexpr int kCoarsestSweeps = 8;  // coarse levels are dominated by the screening term
 constexpr int kCoarsestPixels = 64;
 
@@ -30,12 +29,12 @@ Multigrid::Multigrid(Context& ctx, const Planes& fine)
       l->own_wp = g.buffer(ctx);
       l->own_wx = g.buffer(ctx);
       l->own_wy = g.buffer(ctx);
-      l->own_dinv = g.buffer(ctx);
+      l->own_step = g.buffer(ctx);
       l->own_b = g.buffer(ctx);
       l->wp = &l->own_wp;
       l->wx = &l->own_wx;
       l->wy = &l->own_wy;
-      l->dinv = &l->own_dinv;
+      l->step = &l->own_step;
       l->b = &l->own_b;
     }
     l->x = g.buffer(ctx);
@@ -51,10 +50,10 @@ void Multigrid::setup(const LinearSystem& sys) {
   fine.wp = sys.wp;
   fine.wx = sys.wx;
   fine.wy = sys.wy;
-  fine.dinv = sys.dinv;
+  fine.step = sys.step;
   for (size_t i = 1; i < levels_.size(); ++i) {
     Level &l = *levels_[i], &f = *levels_[i - 1];
-    coarsen_.args(*f.wp, *f.wx, *f.wy, f.grid.ws, f.grid.h, *l.wp, *l.wx, *l.wy, *l.dinv, l.grid.ws,
+    coarsen_.args(*f.wp, *f.wx, *f.wy, f.grid.ws, f.grid.h, *l.wp, *l.wx, *l.wy, *l.step, l.grid.ws,
                   l.grid.h)
         .run_2d(transfer_items(f.grid, l.grid), 3, 64, 1);
   }
@@ -63,7 +62,7 @@ void Multigrid::setup(const LinearSystem& sys) {
 void Multigrid::smooth(Level& l, int sweeps) {
   const Planes& g = l.grid;
   for (int s = 0; s < sweeps; ++s) {
-    jacobi_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, *l.dinv, kOmega, g.ws, g.h, l.tmp);
+    jacobi_.args(l.x, *l.b, *l.wp, *l.wx, *l.wy, *l.step, g.ws, g.h, l.tmp);
     g.run(jacobi_);
     std::swap(l.x, l.tmp);
   }
@@ -76,24 +75,24 @@ PlaneBuffer& Multigrid::apply(PlaneBuffer& r, DeviceDots& dots, int slot) {
     Level& l = *levels_[i];
     Level& c = *levels_[i + 1];
     const Planes &f = l.grid, &g = c.grid;
-    restrict_.args(*l.b, *l.dinv, kOmega, *l.wp, *l.wx, *l.wy, f.ws, f.h, *c.b, g.ws, g.h)
+    restrict_.args(*l.b, *l.step, *l.wp, *l.wx, *l.wy, f.ws, f.h, *c.b, g.ws, g.h)
         .run_2d(transfer_items(f, g), 3, 64, 1);
   }
   Level& coarsest = *levels_[last];
   const Planes& cg = coarsest.grid;
-  jacobi_zero_.args(*coarsest.b, *coarsest.dinv, kOmega, cg.ws, cg.h, coarsest.x);
+  jacobi_zero_.args(*coarsest.b, *coarsest.step, cg.ws, cg.h, coarsest.x);
   cg.run(jacobi_zero_);
   smooth(coarsest, kCoarsestSweeps - 1);
   for (size_t i = last; i-- > 0;) {
-    Level& l = *levels_[i];
-    const Planes &f = l.grid, &g = levels_[i + 1]->grid;
-    Kernel& k = i == 0 ? correct_smooth_dot_ : correct_smooth_;
-    k.args(*l.b, *l.dinv, kOmega, *l.wp, *l.wx, *l.wy, levels_[i + 1]->x, g.ws, g.h, f.ws, f.h, l.x);
+    Level &l = *levels_[i], &c = *levels_[i + 1];
+    const Planes &f = l.grid, &g = c.grid;
     if (i == 0) {
-      k.set_arg(12, dots.partial());
-      dots.reduce(k, f, slot);
+      correct_smooth_dot_.args(*l.b, *l.step, *l.wp, *l.wx, *l.wy, c.x, g.ws, g.h, f.ws, f.h, l.x,
+                               dots.partial());
+      dots.reduce(correct_smooth_dot_, f, slot);
     } else {
-      f.run(k);
+      correct_smooth_.args(*l.b, *l.step, *l.wp, *l.wx, *l.wy, c.x, g.ws, g.h, f.ws, f.h, l.x);
+      f.run(correct_smooth_);
     }
   }
   if (last == 0) dots.dot(r, coarsest.x, coarsest.grid, slot);

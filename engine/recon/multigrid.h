@@ -14,7 +14,7 @@ class Multigrid {
  public:
   Multigrid(Context& ctx, const Planes& fine);
   // Coarsens the weights of `sys` (call again whenever they change); the finest level uses the
-  // system's own weights and 1 / diag.
+  // system's own weights and Jacobi step.
   void setup(const LinearSystem& sys);
   // Returns the buffer holding z = M r (owned by this object, valid until the next call), and
   // puts r * z into `slot` of `dots`.
@@ -25,8 +25,8 @@ class Multigrid {
   struct Level {
     explicit Level(const Planes& g) : grid(g) {}
     Planes grid;
-    PlaneBuffer own_wp, own_wx, own_wy, own_dinv, own_b;
-    PlaneBuffer *wp = nullptr, *wx = nullptr, *wy = nullptr, *dinv = nullptr, *b = nullptr;
+    PlaneBuffer own_wp, own_wx, own_wy, own_step, own_b;
+    PlaneBuffer *wp = nullptr, *wx = nullptr, *wy = nullptr, *step = nullptr, *b = nullptr;
     PlaneBuffer x, tmp;
   };
   void smooth(Level& l, int sweeps);

@@ -21,7 +21,7 @@ ReconSystem::ReconSystem(Context& ctx, int width, int height)
       wp_(grid_.buffer(ctx)),
       wx_(grid_.buffer(ctx)),
       wy_(grid_.buffer(ctx)),
-      dinv_(grid_.buffer(ctx)),
+      step_(grid_.buffer(ctx)),
       b_(grid_.buffer(ctx)),
       x_(grid_.buffer(ctx)),
       r_(grid_.buffer(ctx)),
@@ -60,16 +60,16 @@ void ReconSystem::load(const std::vector<float>& primal_rgb, const std::vector<f
 }
 
 LinearSystem ReconSystem::system() {
-  return LinearSystem{grid_, &wp_, &wx_, &wy_, &dinv_, &b_, &x_, &r_};
+  return LinearSystem{grid_, &wp_, &wx_, &wy_, &step_, &b_, &x_, &r_};
 }
 
 void ReconSystem::set_l2_weights(float alpha) {
-  weights_l2_.args(P_, Gx_, Gy_, alpha * alpha, grid_.ws, grid_.h, wp_, wx_, wy_, dinv_);
+  weights_l2_.args(P_, Gx_, Gy_, alpha * alpha, grid_.ws, grid_.h, wp_, wx_, wy_, step_);
   grid_.run(weights_l2_);
 }
 
 void ReconSystem::set_l1_weights(float alpha, float reg) {
-  weights_l1_.args(x_, P_, Gx_, Gy_, alpha, reg, grid_.ws, grid_.h, wp_, wx_, wy_, dinv_, b_, r_);
+  weights_l1_.args(x_, P_, Gx_, Gy_, alpha, reg, grid_.ws, grid_.h, wp_, wx_, wy_, step_, b_, r_);
   grid_.run(weights_l1_);
 }
 

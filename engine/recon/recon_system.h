@@ -9,13 +9,13 @@
 namespace gdr {
 
 // A linear system A x = b of the screened Poisson form (see kernels/recon/grid.h), with the
-// inverse of its diagonal and room for the residual r = b - A x.
+// damped Jacobi step omega / diag(A) (kernels/recon/grid.h) and room for the residual r = b - A x.
 struct LinearSystem {
   Planes grid;
   PlaneBuffer* wp = nullptr;
   PlaneBuffer* wx = nullptr;
   PlaneBuffer* wy = nullptr;
-  PlaneBuffer* dinv = nullptr;
+  PlaneBuffer* step = nullptr;
   PlaneBuffer* b = nullptr;
   PlaneBuffer* x = nullptr;
   PlaneBuffer* r = nullptr;
@@ -41,9 +41,9 @@ class ReconSystem {
   unsigned nonfinite_inputs() const { return nonfinite_inputs_; }
   // Root mean square of the (finite) primal over all pixels, the largest of R, G, B.
   double primal_rms() const { return primal_rms_; }
-  // Weights and 1 / diag(A) of the L2 system (b is left to build_rhs).
+  // Weights and Jacobi step of the L2 system (b is left to build_rhs).
   void set_l2_weights(float alpha);
-  // IRLS weights 1/(|e| + reg) from the current estimate x, with 1 / diag(A), b, and the
+  // IRLS weights 1/(|e| + reg) from the current estimate x, with the Jacobi step, b, and the
   // residual r = b - A x of x.
   void set_l1_weights(float alpha, float reg);
   // b from the current weights.
@@ -61,7 +61,7 @@ class ReconSystem {
   unsigned nonfinite_inputs_ = 0;
   double primal_rms_ = 0;
   DeviceDots dots_;
-  PlaneBuffer P_, Gx_, Gy_, wp_, wx_, wy_, dinv_, b_, x_, r_;
+  PlaneBuffer P_, Gx_, Gy_, wp_, wx_, wy_, step_, b_, x_, r_;
   Buffer<float> primal_in_, dx_in_, dy_in_, rgb_out_;
   Buffer<cl_uint> count_;
   Kernel pack_, weights_l2_, weights_l1_, rhs_, energy_, unpack_;

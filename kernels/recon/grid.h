@@ -18,6 +18,9 @@
 #define RECON_LOCAL 64
 // Row strides are multiples of this (the widest chunk).
 #define RECON_ALIGN 16
+// Damping of the Jacobi smoother, the usual choice for 5-point stencils; buffers hold the step
+// omega / diag(A) rather than the diagonal.
+#define RECON_OMEGA 0.8f
 
 #ifndef RECON_VEC
 #define RECON_VEC 1

@@ -11,11 +11,11 @@
 
 // Coarse weights of P^T A P: wp sums the 2x2 children; an edge sums the fine edges it crosses.
 // Edges leaving the image come out zero because the fine ones there are. Also the coarse
-// 1 / diag, with the left and upper coarse edges summed again here. Launched like
+// Jacobi step, with the left and upper coarse edges summed again here. Launched like
 // mg_restrict_presmoothed.
 __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
                          __global const float* wyf, int wsf, int hf, __global float* wpc,
-                         __global float* wxc, __global float* wyc, __global float* dinvc,
+                         __global float* wxc, __global float* wyc, __global float* stepc,
                          int wsc, int hc) {
   const int c = get_global_id(1);
   const int per_row = wsf / MG_ITEM_COLS;
@@ -36,7 +36,7 @@ __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
   vstore8(pc, 0, wpc + e);
   vstore8(xc, 0, wxc + e);
   vstore8(yc, 0, wyc + e);
-  vstore8(select((float8)(0.0f), 1.0f / d, d > 0.0f), 0, dinvc + e);
+  vstore8(select((float8)(0.0f), RECON_OMEGA / d, d > 0.0f), 0, stepc + e);
 #else
   float pc = wpf[f] + wpf[f + 1] + wpf[f + wsf] + wpf[f + wsf + 1];
   float xc = wxf[f + 1] + wxf[f + wsf + 1];
@@ -45,50 +45,50 @@ __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
   wpc[e] = pc;
   wxc[e] = xc;
   wyc[e] = yc;
-  dinvc[e] = d > 0.0f ? 1.0f / d : 0.0f;
+  stepc[e] = d > 0.0f ? RECON_OMEGA / d : 0.0f;
 #endif
 }
 
-// x = omega D^-1 b: one Jacobi sweep from a zero guess.
-__kernel void mg_jacobi_zero(__global const float* b, __global const float* dinv, float omega,
+// x = omega D^-1 b (`step` holds omega D^-1): one Jacobi sweep from a zero guess.
+__kernel void mg_jacobi_zero(__global const float* b, __global const float* step,
                              int ws, int h, __global float* x) {
   RECON_CHUNK(o, c, ws, h)
-  VSTORE(omega * VLOAD(dinv + o) * VLOAD(b + o), x + o);
+  VSTORE(VLOAD(step + o) * VLOAD(b + o), x + o);
 }
 
 // xout = x + omega D^-1 (b - A x).
 __kernel void mg_jacobi(__global const float* x, __global const float* b,
                         __global const float* wp, __global const float* wx,
-                        __global const float* wy, __global const float* dinv, float omega,
+                        __global const float* wy, __global const float* step,
                         int ws, int h, __global float* xout) {
   RECON_CHUNK(o, c, ws, h)
   floatv r = VLOAD(b + o) - recon_apply_at(x, wp, wx, wy, o, ws);
-  VSTORE(VLOAD(x + o) + omega * VLOAD(dinv + o) * r, xout + o);
+  VSTORE(VLOAD(x + o) + VLOAD(step + o) * r, xout + o);
 }
 
 // The pre-smoothed estimate from a zero guess, x0 = omega D^-1 b, recomputed where needed
 // rather than stored.
-inline floatv mg_x0(__global const float* b, __global const float* dinv, float omega, int o) {
-  return omega * VLOAD(dinv + o) * VLOAD(b + o);
+inline floatv mg_x0(__global const float* b, __global const float* step, int o) {
+  return VLOAD(step + o) * VLOAD(b + o);
 }
 
 // b - A x0 at the chunk starting at o.
-inline floatv mg_presmoothed_residual(__global const float* b, __global const float* dinv,
-                                      float omega, __global const float* wp,
+inline floatv mg_presmoothed_residual(__global const float* b, __global const float* step,
+                                      __global const float* wp,
                                       __global const float* wx, __global const float* wy, int o,
                                       int ws) {
-  floatv x0 = mg_x0(b, dinv, omega, o);
-  floatv ax = VLOAD(wp + o) * x0 + VLOAD(wx + o) * (x0 - mg_x0(b, dinv, omega, o + 1)) +
-              VLOAD(wx + o - 1) * (x0 - mg_x0(b, dinv, omega, o - 1)) +
-              VLOAD(wy + o) * (x0 - mg_x0(b, dinv, omega, o + ws)) +
-              VLOAD(wy + o - ws) * (x0 - mg_x0(b, dinv, omega, o - ws));
+  floatv x0 = mg_x0(b, step, o);
+  floatv ax = VLOAD(wp + o) * x0 + VLOAD(wx + o) * (x0 - mg_x0(b, step, o + 1)) +
+              VLOAD(wx + o - 1) * (x0 - mg_x0(b, step, o - 1)) +
+              VLOAD(wy + o) * (x0 - mg_x0(b, step, o + ws)) +
+              VLOAD(wy + o - ws) * (x0 - mg_x0(b, step, o - ws));
   return VLOAD(b + o) - ax;
 }
 
 // bc = P^T (b - A x0): pre-smoothing, residual and restriction in one pass. 2D launch over
 // (item of a coarse row * hc, channel), wsf / MG_ITEM_COLS items per coarse row.
-__kernel void mg_restrict_presmoothed(__global const float* b, __global const float* dinv,
-                                      float omega, __global const float* wp,
+__kernel void mg_restrict_presmoothed(__global const float* b, __global const float* step,
+                                      __global const float* wp,
                                       __global const float* wx, __global const float* wy,
                                       int wsf, int hf, __global float* bc, int wsc, int hc) {
   const int c = get_global_id(1);
@@ -100,22 +100,31 @@ __kernel void mg_restrict_presmoothed(__global const float* b, __global const fl
   const int f = recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
   const int e = recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
 #if RECON_VEC == 16
-  float16 s = mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f, wsf) +
-              mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + wsf, wsf);
+  // mg_presmoothed_residual on both rows, sharing x0 and the edge between them.
+  const int g = f + wsf;
+  float16 x0f = mg_x0(b, step, f), x0g = mg_x0(b, step, g);
+  float16 wv = vload16(0, wy + f);
+  float16 af = vload16(0, wp + f) * x0f + vload16(0, wx + f) * (x0f - mg_x0(b, step, f + 1)) +
+               vload16(0, wx + f - 1) * (x0f - mg_x0(b, step, f - 1)) + wv * (x0f - x0g) +
+               vload16(0, wy + f - wsf) * (x0f - mg_x0(b, step, f - wsf));
+  float16 ag = vload16(0, wp + g) * x0g + vload16(0, wx + g) * (x0g - mg_x0(b, step, g + 1)) +
+               vload16(0, wx + g - 1) * (x0g - mg_x0(b, step, g - 1)) +
+               vload16(0, wy + g) * (x0g - mg_x0(b, step, g + wsf)) + wv * (x0g - x0f);
+  float16 s = vload16(0, b + f) - af + vload16(0, b + g) - ag;
   vstore8(s.even + s.odd, 0, bc + e);
 #else
-  bc[e] = mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f, wsf) +
-          mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + 1, wsf) +
-          mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + wsf, wsf) +
-          mg_presmoothed_residual(b, dinv, omega, wp, wx, wy, f + wsf + 1, wsf);
+  bc[e] = mg_presmoothed_residual(b, step, wp, wx, wy, f, wsf) +
+          mg_presmoothed_residual(b, step, wp, wx, wy, f + 1, wsf) +
+          mg_presmoothed_residual(b, step, wp, wx, wy, f + wsf, wsf) +
+          mg_presmoothed_residual(b, step, wp, wx, wy, f + wsf + 1, wsf);
 #endif
 }
 
 // z = y + omega D^-1 (b - A y) for y = x0 + P xc: the coarse correction added to the pre-smoothed
 // estimate, then one Jacobi sweep, with y recomputed at the neighbours instead of stored. `rel`
 // is the chunk's offset in its plane (row fy, column fx).
-inline floatv mg_correct_smooth_at(__global const float* b, __global const float* dinv,
-                                   float omega, __global const float* wp,
+inline floatv mg_correct_smooth_at(__global const float* b, __global const float* step,
+                                   __global const float* wp,
                                    __global const float* wx, __global const float* wy,
                                    __global const float* xc, int wsc, int hc, int c, int rel,
                                    int o, int ws) {
@@ -140,36 +149,36 @@ inline floatv mg_correct_smooth_at(__global const float* b, __global const float
   floatv up_c = xc[e], up_u = xc[e_up], up_d = xc[e_down];
   floatv up_l = xc[e + ((fx + 1) >> 1) - 1 - (fx >> 1)], up_r = xc[e + ((fx + 1) >> 1) - (fx >> 1)];
 #endif
-  floatv y = mg_x0(b, dinv, omega, o) + up_c;
-  floatv ay = VLOAD(wp + o) * y + VLOAD(wx + o) * (y - mg_x0(b, dinv, omega, o + 1) - up_r) +
-              VLOAD(wx + o - 1) * (y - mg_x0(b, dinv, omega, o - 1) - up_l) +
-              VLOAD(wy + o) * (y - mg_x0(b, dinv, omega, o + ws) - up_d) +
-              VLOAD(wy + o - ws) * (y - mg_x0(b, dinv, omega, o - ws) - up_u);
-  return y + omega * VLOAD(dinv + o) * (VLOAD(b + o) - ay);
+  floatv y = mg_x0(b, step, o) + up_c;
+  floatv ay = VLOAD(wp + o) * y + VLOAD(wx + o) * (y - mg_x0(b, step, o + 1) - up_r) +
+              VLOAD(wx + o - 1) * (y - mg_x0(b, step, o - 1) - up_l) +
+              VLOAD(wy + o) * (y - mg_x0(b, step, o + ws) - up_d) +
+              VLOAD(wy + o - ws) * (y - mg_x0(b, step, o - ws) - up_u);
+  return y + VLOAD(step + o) * (VLOAD(b + o) - ay);
 }
 
 // The post-smoothed correction of one level (see mg_correct_smooth_at).
-__kernel void mg_correct_smooth(__global const float* b, __global const float* dinv, float omega,
+__kernel void mg_correct_smooth(__global const float* b, __global const float* step,
                                 __global const float* wp, __global const float* wx,
                                 __global const float* wy, __global const float* xc, int wsc,
                                 int hc, int ws, int h, __global float* z) {
   RECON_CHUNK(o, c, ws, h)
-  VSTORE(mg_correct_smooth_at(b, dinv, omega, wp, wx, wy, xc, wsc, hc, c,
+  VSTORE(mg_correct_smooth_at(b, step, wp, wx, wy, xc, wsc, hc, c,
                               o - recon_plane(c, ws, h), o, ws),
          z + o);
 }
 
 // The same on the finest level, with the partial sums of b * z (r * z for the PCG; reducing
 // launch).
-__kernel void mg_correct_smooth_dot(__global const float* b, __global const float* dinv,
-                                    float omega, __global const float* wp,
+__kernel void mg_correct_smooth_dot(__global const float* b, __global const float* step,
+                                    __global const float* wp,
                                     __global const float* wx, __global const float* wy,
                                     __global const float* xc, int wsc, int hc, int ws, int h,
                                     __global float* z, __global float* partial) {
   __local float scratch[RECON_LOCAL];
   floatv s = (floatv)(0.0f);
   RECON_FOR_SHARE(o, c, ws, h) {
-    floatv zi = mg_correct_smooth_at(b, dinv, omega, wp, wx, wy, xc, wsc, hc, c,
+    floatv zi = mg_correct_smooth_at(b, step, wp, wx, wy, xc, wsc, hc, c,
                                      o - recon_plane(c, ws, h), o, ws);
     VSTORE(zi, z + o);
     s += VLOAD(b + o) * zi;

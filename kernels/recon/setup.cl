@@ -1,5 +1,5 @@
 // Problem set-up for the screened Poisson reconstruction: packing and checking the inputs,
-// the per-term weights (L2, or IRLS for L1), the right-hand side, the Jacobi diagonal, the
+// the per-term weights (L2, or IRLS for L1), the right-hand side, the Jacobi step, the
 // objective value, and unpacking the result. Layout: grid.h.
 #include "recon/grid.h"
 
@@ -35,18 +35,18 @@ __kernel void recon_pack(__global const float* primal, __global const float* dx,
   if (bad) atomic_add(nonfinite, bad);
 }
 
-// 1 / diag(A) from the five weights touching a pixel, for Jacobi smoothing; 0 where no term
-// touches it (and in the gap).
-inline floatv recon_diag_inv(floatv wp, floatv wx, floatv wy, floatv w_left, floatv w_up) {
+// The damped Jacobi step omega / diag(A) from the five weights touching a pixel; 0 where no
+// term touches it (and in the gap).
+inline floatv recon_jacobi_step(floatv wp, floatv wx, floatv wy, floatv w_left, floatv w_up) {
   floatv d = wp + wx + wy + w_left + w_up;
-  return select((floatv)(0.0f), 1.0f / d, d > 0.0f);
+  return select((floatv)(0.0f), RECON_OMEGA / d, d > 0.0f);
 }
 
-// L2: every present term has weight 1 (alpha^2 for the primal term); and 1 / diag(A).
+// L2: every present term has weight 1 (alpha^2 for the primal term); and the Jacobi step.
 __kernel void recon_weights_l2(__global const float* P, __global const float* Gx,
                                __global const float* Gy, float alpha2, int ws, int h,
                                __global float* wp, __global float* wx, __global float* wy,
-                               __global float* dinv) {
+                               __global float* step) {
   RECON_CHUNK(o, c, ws, h)
   const floatv one = (floatv)(1.0f);
   floatv wpi = recon_weight((floatv)(alpha2), VLOAD(P + o));
@@ -54,9 +54,9 @@ __kernel void recon_weights_l2(__global const float* P, __global const float* Gx
   VSTORE(wpi, wp + o);
   VSTORE(wxi, wx + o);
   VSTORE(wyi, wy + o);
-  VSTORE(recon_diag_inv(wpi, wxi, wyi, recon_weight(one, VLOAD(Gx + o - 1)),
+  VSTORE(recon_jacobi_step(wpi, wxi, wyi, recon_weight(one, VLOAD(Gx + o - 1)),
                         recon_weight(one, VLOAD(Gy + o - ws))),
-         dinv + o);
+         step + o);
 }
 
 // The IRLS weight of a term with residual e: 1/(|e| + reg), so that w e^2 ~ |e| at the current
@@ -66,12 +66,12 @@ inline floatv recon_l1_weight(floatv e, floatv g, float reg) {
 }
 
 // L1 by iteratively reweighted least squares: the weights from the current estimate x, and
-// everything a solve starts from: b, 1 / diag(A) and r = b - A x (the left and upper neighbours'
+// everything a solve starts from: b, the Jacobi step and r = b - A x (the left and upper neighbours'
 // edge weights recomputed here rather than read back).
 __kernel void recon_weights_l1(__global const float* x, __global const float* P,
                                __global const float* Gx, __global const float* Gy, float alpha,
                                float reg, int ws, int h, __global float* wp,
-                               __global float* wx, __global float* wy, __global float* dinv,
+                               __global float* wx, __global float* wy, __global float* step,
                                __global float* b, __global float* r) {
   RECON_CHUNK(o, c, ws, h)
   floatv xi = VLOAD(x + o), p = VLOAD(P + o), gx = VLOAD(Gx + o), gy = VLOAD(Gy + o);
@@ -88,7 +88,7 @@ __kernel void recon_weights_l1(__global const float* x, __global const float* P,
   VSTORE(wpi, wp + o);
   VSTORE(wxi, wx + o);
   VSTORE(wyi, wy + o);
-  VSTORE(recon_diag_inv(wpi, wxi, wyi, wl, wu), dinv + o);
+  VSTORE(recon_jacobi_step(wpi, wxi, wyi, wl, wu), step + o);
   VSTORE(bi, b + o);
   VSTORE(bi - ax, r + o);
 }
