@@ -8,7 +8,7 @@
 namespace gdr {
 
 Planes::Planes(int width, int height, int vec_width)
-    : w(width), h(height), ws((width + kAlign - 1) / kAlign * kAlign), vec(vec_width) {}
+    : w(width), h(height), ws(gdr_recon_stride(width)), vec(vec_width) {}
 
 PlaneBuffer Planes::buffer(Context& ctx) const {
   PlaneBuffer b(ctx, floats());

@@ -1,30 +1,27 @@
-// The device layout of every reconstruction buffer (kernels/recon/grid.h): three float planes
-// (R, G, B) stacked with gap rows between them, rows padded to a multiple of 16 floats, all gap
-// entries zero (or NaN for absent inputs). Kernels take chunks of `vec` floats: 16 on CPU devices
-// (written as float16 operations), 1 on GPUs.
+// The device layout of every reconstruction buffer (kernels/shared/recon_layout.h): three float
+// planes (R, G, B) stacked with gap rows between them, rows padded to a multiple of 16 floats, all
+// gap entries zero (or NaN for absent inputs). Kernels take chunks of `vec` floats: 16 on CPU
+// devices (written as float16 operations), 1 on GPUs (kernels/recon/grid.h).
 #pragma once
 #include <memory>
 #include <string>
 
 #include "device/context.h"
+#include "shared/recon_layout.h"
 
 namespace gdr {
 
 using PlaneBuffer = Buffer<float>;
 
 struct Planes {
-  static constexpr int kAlign = 16;  // RECON_ALIGN in grid.h
-
   Planes(int width, int height, int vec);
   int w, h;
-  int ws;   // row stride: w rounded up to kAlign
+  int ws;   // row stride
   int vec;  // floats per work item
 
-  // Buffer length: the planes, a gap row above each and below the last, one slack row read by
-  // the restriction from the last gap row, and slack for a vector load one past a row end.
-  size_t floats() const { return size_t(ws) * (3 * (size_t(h) + 1) + 2) + kAlign; }
+  // Buffer length: the rows, and slack for a vector load one past the last row's end.
+  size_t floats() const { return size_t(ws) * size_t(gdr_recon_rows(h)) + GDR_RECON_ALIGN; }
   size_t chunks() const { return size_t(h) * ws / vec; }  // work items per plane
-  size_t index(int c, int x, int y) const { return size_t(ws) * (1 + size_t(c) * (h + 1) + y) + x; }
   Planes coarse() const { return Planes((w + 1) / 2, (h + 1) / 2, vec); }
 
   // A zero-filled buffer of this layout.

@@ -27,8 +27,8 @@ __kernel void dct_load(__global const float* b, int w, int h, int ws, __global f
   int x = get_global_id(0), j = get_global_id(1);
   if (x >= w || j >= h) return;
   int e = dct_source_row(j, h) * ws + x;
-  re[j * w + x] = (float4)(b[recon_plane(0, ws, h) + e], b[recon_plane(1, ws, h) + e],
-                           b[recon_plane(2, ws, h) + e], 0.0f);
+  re[j * w + x] = (float4)(b[gdr_recon_plane(0, ws, h) + e], b[gdr_recon_plane(1, ws, h) + e],
+                           b[gdr_recon_plane(2, ws, h) + e], 0.0f);
   im[j * w + x] = (float4)(0.0f);
 }
 
@@ -204,7 +204,7 @@ __kernel void dct_store(__global const float4* re, int w, int h, int ws, __globa
   if (col >= w || j >= h) return;
   float4 v = re[j * w + col] / (float)h;
   int e = dct_source_row(j, h) * ws + col;
-  x[recon_plane(0, ws, h) + e] = v.x;
-  x[recon_plane(1, ws, h) + e] = v.y;
-  x[recon_plane(2, ws, h) + e] = v.z;
+  x[gdr_recon_plane(0, ws, h) + e] = v.x;
+  x[gdr_recon_plane(1, ws, h) + e] = v.y;
+  x[gdr_recon_plane(2, ws, h) + e] = v.z;
 }

@@ -1,23 +1,22 @@
 // Shared by the reconstruction kernels. An image lives on the device as three planes of one float
-// per pixel (R, G, B), stacked in one buffer with gaps between them:
-//   element (c, x, y) = ws * (1 + c * (h + 1) + y) + x,
-// where the row stride ws is the width rounded up to RECON_ALIGN. The columns past the width and
-// the rows between planes (one above each plane, one below the last) are gap: every term weight is
-// zero there, so the operator needs no border tests, a pixel's left neighbour on the row above is
-// harmless, and the three channels never mix. Vectors start at zero in the gap and stay finite
-// (the multigrid correction may leave values there, which zero weights keep away from the pixels).
-// Absent inputs, including the gap, are stored as NaN: see recon_pack.
+// per pixel (R, G, B), stacked in one buffer with gaps between them (shared/recon_layout.h):
+//   element (c, x, y) = ws * (1 + c * (h + 1) + y) + x.
+// The columns past the width and the rows between planes (one above each plane, one below the
+// last) are gap: every term weight is zero there, so the operator needs no border tests, a
+// pixel's left neighbour on the row above is harmless, and the three channels never mix. Vectors
+// start at zero in the gap and stay finite (the multigrid correction may leave values there,
+// which zero weights keep away from the pixels). Absent inputs, including the gap, are stored as
+// NaN: see recon_pack.
 //
 // A work item takes a chunk of RECON_VEC consecutive floats of one plane. On CPU devices chunks are
 // 16 wide and written as float16 vector operations (PoCL does not vectorise these kernels across
 // work items by itself); on GPUs a chunk is one float and neighbouring items touch neighbouring
 // words. Kernels over chunks are launched 2D: (chunk of the plane, channel).
 #pragma once
+#include "shared/recon_layout.h"
 
 // Every launch uses this local size (PoCL compiles again per new local size).
 #define RECON_LOCAL 64
-// Row strides are multiples of this (the widest chunk).
-#define RECON_ALIGN 16
 // Damping of the Jacobi smoother, the usual choice for 5-point stencils; buffers hold the step
 // omega / diag(A) rather than the diagonal.
 #define RECON_OMEGA 0.8f
@@ -43,9 +42,10 @@ typedef float floatv;
 #else
 #error "RECON_VEC must be 1 or 16"
 #endif
+#if GDR_RECON_ALIGN % RECON_VEC != 0
+#error "a chunk must not straddle two rows"
+#endif
 
-// First element of plane c.
-inline int recon_plane(int c, int ws, int h) { return ws * (1 + c * (h + 1)); }
 // Chunks in one plane.
 inline int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
 
@@ -53,7 +53,7 @@ inline int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
 #define RECON_CHUNK(o, c, ws, h)                                 \
   const int c = get_global_id(1);                                \
   if ((int)get_global_id(0) >= recon_chunks(ws, h)) return;      \
-  const int o = recon_plane(c, ws, h) + (int)get_global_id(0) * RECON_VEC;
+  const int o = gdr_recon_plane(c, ws, h) + (int)get_global_id(0) * RECON_VEC;
 
 // Reducing kernels, launched 2D as (groups * RECON_LOCAL, channel): each item takes a share of the
 // plane's chunks, a contiguous run where RECON_CONTIGUOUS is defined (CPU devices: one thread
@@ -64,13 +64,13 @@ inline int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
   for (int o##_n = recon_chunks(ws, h),                                                        \
            o##_len = (o##_n + (int)get_global_size(0) - 1) / (int)get_global_size(0),          \
            o##_k = (int)get_global_id(0) * o##_len, o##_end = min(o##_n, o##_k + o##_len),     \
-           o = recon_plane(c, ws, h) + o##_k * RECON_VEC;                                      \
+           o = gdr_recon_plane(c, ws, h) + o##_k * RECON_VEC;                                      \
        o##_k < o##_end; ++o##_k, o += RECON_VEC)
 #else
 #define RECON_FOR_SHARE(o, c, ws, h)                                                           \
   const int c = get_global_id(1);                                                              \
   for (int o##_n = recon_chunks(ws, h), o##_k = (int)get_global_id(0),                         \
-           o = recon_plane(c, ws, h) + o##_k * RECON_VEC;                                      \
+           o = gdr_recon_plane(c, ws, h) + o##_k * RECON_VEC;                                      \
        o##_k < o##_n; o##_k += (int)get_global_size(0),                                        \
            o += (int)get_global_size(0) * RECON_VEC)
 #endif

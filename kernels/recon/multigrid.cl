@@ -24,8 +24,8 @@ __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
   const int cy = k / per_row, j = k % per_row;
   // Fine rows 2 cy and 2 cy + 1 (the latter may be the gap row below the plane: all zero); row
   // 2 cy - 1 holds the edges to the coarse row above (the gap row above the plane for cy = 0).
-  const int f = recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
-  const int e = recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
+  const int f = gdr_recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
+  const int e = gdr_recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
 #if RECON_VEC == 16
   float16 p = vload16(0, wpf + f) + vload16(0, wpf + f + wsf);
   float16 x = vload16(0, wxf + f) + vload16(0, wxf + f + wsf);
@@ -97,8 +97,8 @@ __kernel void mg_restrict_presmoothed(__global const float* b, __global const fl
   if (k >= per_row * hc) return;
   const int cy = k / per_row, j = k % per_row;
   // Fine rows 2 cy and 2 cy + 1 (the latter may be the gap row, whose residual is 0).
-  const int f = recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
-  const int e = recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
+  const int f = gdr_recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
+  const int e = gdr_recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
 #if RECON_VEC == 16
   // mg_presmoothed_residual on both rows, sharing x0 and the edge between them.
   const int g = f + wsf;
@@ -130,7 +130,7 @@ inline floatv mg_correct_smooth_at(__global const float* b, __global const float
                                    int o, int ws) {
   const int fy = rel / ws, fx = rel % ws;
   // Coarse rows of fine rows fy - 1, fy, fy + 1 (floor division; row -1 is the gap row above).
-  const int row0 = recon_plane(c, wsc, hc) + (fx >> 1);
+  const int row0 = gdr_recon_plane(c, wsc, hc) + (fx >> 1);
   const int e = row0 + (fy >> 1) * wsc;
   const int e_up = row0 + (((fy + 1) >> 1) - 1) * wsc;
   const int e_down = row0 + ((fy + 1) >> 1) * wsc;
@@ -164,7 +164,7 @@ __kernel void mg_correct_smooth(__global const float* b, __global const float* s
                                 int hc, int ws, int h, __global float* z) {
   RECON_CHUNK(o, c, ws, h)
   VSTORE(mg_correct_smooth_at(b, step, wp, wx, wy, xc, wsc, hc, c,
-                              o - recon_plane(c, ws, h), o, ws),
+                              o - gdr_recon_plane(c, ws, h), o, ws),
          z + o);
 }
 
@@ -179,7 +179,7 @@ __kernel void mg_correct_smooth_dot(__global const float* b, __global const floa
   floatv s = (floatv)(0.0f);
   RECON_FOR_SHARE(o, c, ws, h) {
     floatv zi = mg_correct_smooth_at(b, step, wp, wx, wy, xc, wsc, hc, c,
-                                     o - recon_plane(c, ws, h), o, ws);
+                                     o - gdr_recon_plane(c, ws, h), o, ws);
     VSTORE(zi, z + o);
     s += VLOAD(b + o) * zi;
   }

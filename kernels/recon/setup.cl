@@ -15,7 +15,7 @@ __kernel void recon_pack(__global const float* primal, __global const float* dx,
   int i = py * w + px;
   uint bad = 0;
   for (int c = 0; c < 3; ++c) {
-    int e = recon_plane(c, ws, h) + py * ws + px;
+    int e = gdr_recon_plane(c, ws, h) + py * ws + px;
     float p = primal[3 * i + c];
     if (isfinite(p)) {
       P[e] = p;
@@ -132,7 +132,7 @@ __kernel void recon_unpack(__global const float* x, __global const float* P, int
   if (px >= w || py >= h) return;
   int i = py * w + px;
   for (int c = 0; c < 3; ++c) {
-    int e = recon_plane(c, ws, h) + py * ws + px;
+    int e = gdr_recon_plane(c, ws, h) + py * ws + px;
     float v = x[e];
     if (!isfinite(v)) {
       float p = P[e];
