@@ -9,6 +9,7 @@
 #include "recon/cg_solver.h"
 #include "recon/dct_solver.h"
 #include "recon/fast_solver.h"
+#include "recon/planes.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -91,7 +92,9 @@ Workspace& workspace(Context& ctx, const ReconSettings& s, int w, int h) {
 ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
                         const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb,
                         const ReconSettings& settings, Stats* stats) {
-  if (width <= 0 || height <= 0 || int64_t(width) * height > INT_MAX / 4) {
+  // Kernels index the planar buffers (recon/planes.h) with 32-bit ints.
+  if (width <= 0 || height <= 0 || width > INT_MAX - GDR_RECON_ALIGN || height > INT_MAX / 4 ||
+      double(gdr_recon_stride(width)) * gdr_recon_rows(height) > INT_MAX / 2) {
     throw Error("reconstruct: invalid image size " + std::to_string(width) + "x" + std::to_string(height));
   }
   check_input(width, height, primal_rgb, "primal");

@@ -119,6 +119,14 @@ TEST(ReconInput, MismatchedSizesAreRejected) {
   EXPECT_THROW(reconstruct(test::default_context(), 4, 3, small, ok, ok, s, nullptr), Error);
   EXPECT_THROW(reconstruct(test::default_context(), 4, 3, ok, ok, small, s, nullptr), Error);
   EXPECT_THROW(reconstruct(test::default_context(), 0, 3, ok, ok, ok, s, nullptr), Error);
+  // Too large for the kernels' 32-bit indices (a strip: the row stride pads 1 pixel to 16), caught
+  // as such before the inputs are looked at.
+  try {
+    reconstruct(test::default_context(), 1, 60000000, ok, ok, ok, s, nullptr);
+    ADD_FAILURE() << "no error for a 1x60000000 image";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid image size"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ReconStats, SolveIsRecorded) {
