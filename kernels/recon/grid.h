@@ -15,6 +15,10 @@
 #pragma once
 #include "shared/recon_layout.h"
 
+// Helpers are inlined always: PoCL otherwise keeps the larger ones as calls that pass float16
+// values through memory.
+#define RECON_INLINE inline __attribute__((always_inline))
+
 // Every launch uses this local size (PoCL compiles again per new local size).
 #define RECON_LOCAL 64
 // Damping of the Jacobi smoother, the usual choice for 5-point stencils; buffers hold the step
@@ -27,9 +31,15 @@
 
 #if RECON_VEC == 16
 typedef float16 floatv;
-#define VLOAD(p) vload16(0, (p))
-#define VSTORE(v, p) vstore16((v), 0, (p))
-inline float recon_hsum(float16 v) {
+// Vectors at any float-aligned address, each one unaligned vector access (PoCL's vload16 and
+// vload8 assemble the vector from 8-byte pieces).
+typedef float16 recon_float16_unaligned __attribute__((aligned(4)));
+typedef float8 recon_float8_unaligned __attribute__((aligned(4)));
+#define VLOAD(p) (*(__global const recon_float16_unaligned*)(p))
+#define VSTORE(v, p) (*(__global recon_float16_unaligned*)(p) = (v))
+#define VLOAD8(p) (*(__global const recon_float8_unaligned*)(p))
+#define VSTORE8(v, p) (*(__global recon_float8_unaligned*)(p) = (v))
+RECON_INLINE float recon_hsum(float16 v) {
   float8 a = v.lo + v.hi;
   float4 b = a.lo + a.hi;
   return b.x + b.y + b.z + b.w;
@@ -47,7 +57,7 @@ typedef float floatv;
 #endif
 
 // Chunks in one plane.
-inline int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
+RECON_INLINE int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
 
 // The chunk of this work item: channel `c`, first element `o`. Returns past the last chunk.
 #define RECON_CHUNK(o, c, ws, h)                                 \
@@ -78,16 +88,16 @@ inline int recon_chunks(int ws, int h) { return h * ws / RECON_VEC; }
 // Absent terms (non-finite inputs, the last column of dx, the last row of dy, the gap) are NaN
 // in the packed inputs: their weight is 0 and their value reads as 0.
 #define RECON_ABSENT(v) isnan(v)
-inline floatv recon_value(floatv v) { return select(v, (floatv)(0.0f), RECON_ABSENT(v)); }
+RECON_INLINE floatv recon_value(floatv v) { return select(v, (floatv)(0.0f), RECON_ABSENT(v)); }
 // `weight` where the term `v` is present, else 0.
-inline floatv recon_weight(floatv weight, floatv v) {
+RECON_INLINE floatv recon_weight(floatv weight, floatv v) {
   return select(weight, (floatv)(0.0f), RECON_ABSENT(v));
 }
 
 // (A x) at the chunk starting at element o: wp x_i + sum over the pixel's edges of w_e (x_i - x_j),
 // the screened Poisson operator Wp + Dx^T Wx Dx + Dy^T Wy Dy (weights are zero where an edge
 // leaves the image).
-inline floatv recon_apply_at(__global const float* x, __global const float* wp,
+RECON_INLINE floatv recon_apply_at(__global const float* x, __global const float* wp,
                              __global const float* wx, __global const float* wy, int o, int ws) {
   floatv xi = VLOAD(x + o);
   return VLOAD(wp + o) * xi + VLOAD(wx + o) * (xi - VLOAD(x + o + 1)) +
@@ -96,7 +106,7 @@ inline floatv recon_apply_at(__global const float* x, __global const float* wp,
 }
 
 // Sum of `v` over the work-group (dimension 0); every item of the group must call it.
-inline float recon_group_sum(float v, __local float* scratch) {
+RECON_INLINE float recon_group_sum(float v, __local float* scratch) {
   int l = get_local_id(0);
   scratch[l] = v;
   barrier(CLK_LOCAL_MEM_FENCE);
@@ -117,15 +127,15 @@ inline float recon_group_sum(float v, __local float* scratch) {
       partial[get_global_id(1) * get_num_groups(0) + get_group_id(0)] = total_;           \
   }
 
-inline float recon_safe_div(float a, float b) {
+RECON_INLINE float recon_safe_div(float a, float b) {
   float q = b > 0.0f ? a / b : 0.0f;
   return isfinite(q) ? q : 0.0f;
 }
 
 // Per-channel scalars (CG step lengths) live in float4 slots, one lane per channel.
-inline float recon_lane(float4 v, int c) { return c == 0 ? v.x : c == 1 ? v.y : v.z; }
+RECON_INLINE float recon_lane(float4 v, int c) { return c == 0 ? v.x : c == 1 ? v.y : v.z; }
 
 // Channel c's a / b for the CG step lengths; 0 where b <= 0 (a converged or empty channel).
-inline float recon_ratio(__global const float4* scal, int num, int den, int c) {
+RECON_INLINE float recon_ratio(__global const float4* scal, int num, int den, int c) {
   return recon_safe_div(recon_lane(scal[num], c), recon_lane(scal[den], c));
 }

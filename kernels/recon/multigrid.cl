@@ -27,16 +27,16 @@ __kernel void mg_coarsen(__global const float* wpf, __global const float* wxf,
   const int f = gdr_recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
   const int e = gdr_recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
 #if RECON_VEC == 16
-  float16 p = vload16(0, wpf + f) + vload16(0, wpf + f + wsf);
-  float16 x = vload16(0, wxf + f) + vload16(0, wxf + f + wsf);
-  float16 xl = vload16(0, wxf + f - 2) + vload16(0, wxf + f + wsf - 2);
-  float16 y = vload16(0, wyf + f + wsf), yu = vload16(0, wyf + f - wsf);
+  float16 p = VLOAD(wpf + f) + VLOAD(wpf + f + wsf);
+  float16 x = VLOAD(wxf + f) + VLOAD(wxf + f + wsf);
+  float16 xl = VLOAD(wxf + f - 2) + VLOAD(wxf + f + wsf - 2);
+  float16 y = VLOAD(wyf + f + wsf), yu = VLOAD(wyf + f - wsf);
   float8 pc = p.even + p.odd, xc = x.odd, yc = y.even + y.odd;
   float8 d = pc + xc + yc + xl.odd + yu.even + yu.odd;
-  vstore8(pc, 0, wpc + e);
-  vstore8(xc, 0, wxc + e);
-  vstore8(yc, 0, wyc + e);
-  vstore8(select((float8)(0.0f), RECON_OMEGA / d, d > 0.0f), 0, stepc + e);
+  VSTORE8(pc, wpc + e);
+  VSTORE8(xc, wxc + e);
+  VSTORE8(yc, wyc + e);
+  VSTORE8(select((float8)(0.0f), RECON_OMEGA / d, d > 0.0f), stepc + e);
 #else
   float pc = wpf[f] + wpf[f + 1] + wpf[f + wsf] + wpf[f + wsf + 1];
   float xc = wxf[f + 1] + wxf[f + wsf + 1];
@@ -68,12 +68,12 @@ __kernel void mg_jacobi(__global const float* x, __global const float* b,
 
 // The pre-smoothed estimate from a zero guess, x0 = omega D^-1 b, recomputed where needed
 // rather than stored.
-inline floatv mg_x0(__global const float* b, __global const float* step, int o) {
+RECON_INLINE floatv mg_x0(__global const float* b, __global const float* step, int o) {
   return VLOAD(step + o) * VLOAD(b + o);
 }
 
 // b - A x0 at the chunk starting at o.
-inline floatv mg_presmoothed_residual(__global const float* b, __global const float* step,
+RECON_INLINE floatv mg_presmoothed_residual(__global const float* b, __global const float* step,
                                       __global const float* wp,
                                       __global const float* wx, __global const float* wy, int o,
                                       int ws) {
@@ -103,15 +103,15 @@ __kernel void mg_restrict_presmoothed(__global const float* b, __global const fl
   // mg_presmoothed_residual on both rows, sharing x0 and the edge between them.
   const int g = f + wsf;
   float16 x0f = mg_x0(b, step, f), x0g = mg_x0(b, step, g);
-  float16 wv = vload16(0, wy + f);
-  float16 af = vload16(0, wp + f) * x0f + vload16(0, wx + f) * (x0f - mg_x0(b, step, f + 1)) +
-               vload16(0, wx + f - 1) * (x0f - mg_x0(b, step, f - 1)) + wv * (x0f - x0g) +
-               vload16(0, wy + f - wsf) * (x0f - mg_x0(b, step, f - wsf));
-  float16 ag = vload16(0, wp + g) * x0g + vload16(0, wx + g) * (x0g - mg_x0(b, step, g + 1)) +
-               vload16(0, wx + g - 1) * (x0g - mg_x0(b, step, g - 1)) +
-               vload16(0, wy + g) * (x0g - mg_x0(b, step, g + wsf)) + wv * (x0g - x0f);
-  float16 s = vload16(0, b + f) - af + vload16(0, b + g) - ag;
-  vstore8(s.even + s.odd, 0, bc + e);
+  float16 wv = VLOAD(wy + f);
+  float16 af = VLOAD(wp + f) * x0f + VLOAD(wx + f) * (x0f - mg_x0(b, step, f + 1)) +
+               VLOAD(wx + f - 1) * (x0f - mg_x0(b, step, f - 1)) + wv * (x0f - x0g) +
+               VLOAD(wy + f - wsf) * (x0f - mg_x0(b, step, f - wsf));
+  float16 ag = VLOAD(wp + g) * x0g + VLOAD(wx + g) * (x0g - mg_x0(b, step, g + 1)) +
+               VLOAD(wx + g - 1) * (x0g - mg_x0(b, step, g - 1)) +
+               VLOAD(wy + g) * (x0g - mg_x0(b, step, g + wsf)) + wv * (x0g - x0f);
+  float16 s = VLOAD(b + f) - af + VLOAD(b + g) - ag;
+  VSTORE8(s.even + s.odd, bc + e);
 #else
   bc[e] = mg_presmoothed_residual(b, step, wp, wx, wy, f, wsf) +
           mg_presmoothed_residual(b, step, wp, wx, wy, f + 1, wsf) +
@@ -123,7 +123,7 @@ __kernel void mg_restrict_presmoothed(__global const float* b, __global const fl
 // z = y + omega D^-1 (b - A y) for y = x0 + P xc: the coarse correction added to the pre-smoothed
 // estimate, then one Jacobi sweep, with y recomputed at the neighbours instead of stored. `rel`
 // is the chunk's offset in its plane (row fy, column fx).
-inline floatv mg_correct_smooth_at(__global const float* b, __global const float* step,
+RECON_INLINE floatv mg_correct_smooth_at(__global const float* b, __global const float* step,
                                    __global const float* wp,
                                    __global const float* wx, __global const float* wy,
                                    __global const float* xc, int wsc, int hc, int c, int rel,
@@ -139,11 +139,11 @@ inline floatv mg_correct_smooth_at(__global const float* b, __global const float
   // (k + 1) / 2 from one coarse column further left or from the same one.
   const uint16 same = (uint16)(0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7);
   const uint16 shifted = (uint16)(0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8);
-  floatv up_c = shuffle(vload8(0, xc + e), same);
-  floatv up_l = shuffle(vload16(0, xc + e - 1), shifted);
-  floatv up_r = shuffle(vload16(0, xc + e), shifted);
-  floatv up_u = shuffle(vload8(0, xc + e_up), same);
-  floatv up_d = shuffle(vload8(0, xc + e_down), same);
+  floatv up_c = shuffle(VLOAD8(xc + e), same);
+  floatv up_l = shuffle(VLOAD(xc + e - 1), shifted);
+  floatv up_r = shuffle(VLOAD(xc + e), shifted);
+  floatv up_u = shuffle(VLOAD8(xc + e_up), same);
+  floatv up_d = shuffle(VLOAD8(xc + e_down), same);
 #else
   // Column fx - 1 = -1 reads the coarse row's element before it (finite, weight zero).
   floatv up_c = xc[e], up_u = xc[e_up], up_d = xc[e_down];

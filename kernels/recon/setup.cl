@@ -37,7 +37,7 @@ __kernel void recon_pack(__global const float* primal, __global const float* dx,
 
 // The damped Jacobi step omega / diag(A) from the five weights touching a pixel; 0 where no
 // term touches it (and in the gap).
-inline floatv recon_jacobi_step(floatv wp, floatv wx, floatv wy, floatv w_left, floatv w_up) {
+RECON_INLINE floatv recon_jacobi_step(floatv wp, floatv wx, floatv wy, floatv w_left, floatv w_up) {
   floatv d = wp + wx + wy + w_left + w_up;
   return select((floatv)(0.0f), RECON_OMEGA / d, d > 0.0f);
 }
@@ -61,7 +61,7 @@ __kernel void recon_weights_l2(__global const float* P, __global const float* Gx
 
 // The IRLS weight of a term with residual e: 1/(|e| + reg), so that w e^2 ~ |e| at the current
 // estimate; 0 for an absent term (g NaN).
-inline floatv recon_l1_weight(floatv e, floatv g, float reg) {
+RECON_INLINE floatv recon_l1_weight(floatv e, floatv g, float reg) {
   return recon_weight(1.0f / (fabs(e) + reg), g);
 }
 
