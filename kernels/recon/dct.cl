@@ -19,7 +19,9 @@ __kernel void dct_twiddles(int n, __global float2* tw) {
 }
 
 // The sample of a column that lands at position j of Makhoul's reordering.
-RECON_INLINE int dct_source_row(int j, int h) { return j < (h + 1) / 2 ? 2 * j : 2 * (h - 1 - j) + 1; }
+RECON_INLINE int dct_source_row(int j, int h) {
+  return j < (h + 1) / 2 ? 2 * j : 2 * (h - 1 - j) + 1;
+}
 
 // re = reordered b (b in the planar layout of grid.h), im = 0. 2D launch over (column, j).
 __kernel void dct_load(__global const float* b, int w, int h, int ws, __global float4* re,

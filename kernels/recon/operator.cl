@@ -16,17 +16,3 @@ __kernel void recon_residual(__global const float* x, __global const float* b,
   RECON_CHUNK(o, c, ws, h)
   VSTORE(VLOAD(b + o) - recon_apply_at(x, wp, wx, wy, o, ws), r + o);
 }
-
-// q = A p and the partial sums of p * q (one pass instead of two). Reducing launch.
-__kernel void recon_apply_dot(__global const float* p, __global const float* wp,
-                              __global const float* wx, __global const float* wy, int ws, int h,
-                              __global float* q, __global float* partial) {
-  __local float scratch[RECON_LOCAL];
-  floatv s = (floatv)(0.0f);
-  RECON_FOR_SHARE(o, c, ws, h) {
-    floatv v = recon_apply_at(p, wp, wx, wy, o, ws);
-    VSTORE(v, q + o);
-    s += VLOAD(p + o) * v;
-  }
-  RECON_WRITE_PARTIAL(s, scratch, partial)
-}

@@ -37,7 +37,8 @@ __kernel void recon_pack(__global const float* primal, __global const float* dx,
 
 // The damped Jacobi step omega / diag(A) from the five weights touching a pixel; 0 where no
 // term touches it (and in the gap).
-RECON_INLINE floatv recon_jacobi_step(floatv wp, floatv wx, floatv wy, floatv w_left, floatv w_up) {
+RECON_INLINE floatv recon_jacobi_step(floatv wp, floatv wx, floatv wy, floatv w_left,
+                                      floatv w_up) {
   floatv d = wp + wx + wy + w_left + w_up;
   return select((floatv)(0.0f), RECON_OMEGA / d, d > 0.0f);
 }
@@ -76,7 +77,8 @@ __kernel void recon_weights_l1(__global const float* x, __global const float* P,
   RECON_CHUNK(o, c, ws, h)
   floatv xi = VLOAD(x + o), p = VLOAD(P + o), gx = VLOAD(Gx + o), gy = VLOAD(Gy + o);
   floatv gl = VLOAD(Gx + o - 1), gu = VLOAD(Gy + o - ws);
-  floatv xr = VLOAD(x + o + 1), xl = VLOAD(x + o - 1), xd = VLOAD(x + o + ws), xu = VLOAD(x + o - ws);
+  floatv xr = VLOAD(x + o + 1), xl = VLOAD(x + o - 1);
+  floatv xd = VLOAD(x + o + ws), xu = VLOAD(x + o - ws);
   floatv wpi = recon_weight(alpha * alpha / (fabs(alpha * (xi - p)) + reg), p);
   floatv wxi = recon_l1_weight(xr - xi - gx, gx, reg);
   floatv wyi = recon_l1_weight(xd - xi - gy, gy, reg);
