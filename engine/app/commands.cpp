@@ -58,7 +58,9 @@ int run_command(const Options& options) {
     std::string out = options.output.empty()
                           ? std::filesystem::path(options.reconstruct).stem().string() + "-recon.exr"
                           : options.output;
-    int code = reconstruct_command(options.reconstruct, out, options.recon, options.alpha, ctx, &stats);
+    int code = reconstruct_command(
+        options.reconstruct, out,
+        recon_settings(options.recon, options.alpha, options.recon_solver), ctx, &stats);
     if (!options.stats_path.empty()) stats.write_json(options.stats_path);
     return code;
   }

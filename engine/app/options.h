@@ -36,6 +36,7 @@ struct Options {
   std::string shift = "hybrid";
   float shift_threshold = 0.001f;
   std::string recon = "l1";
+  std::string recon_solver = "fast";
   float alpha = 0.2f;
 
   bool verbose = false;

@@ -41,6 +41,7 @@ nlohmann::json settings_json(const Options& o, const RenderSettings& s, const st
     j["shift"] = o.shift;
     j["shift_threshold"] = o.shift_threshold;
     j["recon"] = o.recon;
+    j["recon_solver"] = o.recon_solver;
     j["alpha"] = o.alpha;
   }
   for (const auto& [k, v] : o.defines) j["defines"][k] = v;
@@ -98,7 +99,9 @@ int render_command(const Options& o) {
     GradientPathTracer tracer(ctx, scene, embree, gpt);
     GradientImages layers = tracer.render(settings);
     ScopedTimer t(&stats, "recon/total");
-    result.image = gradient_image(ctx, layers, o.recon, o.alpha, &stats);
+    std::optional<ReconSettings> recon;
+    if (o.recon != "none") recon = recon_settings(o.recon, o.alpha, o.recon_solver);
+    result.image = gradient_image(ctx, layers, recon, &stats);
     result.samples = layers.samples;
     result.seconds = layers.seconds + t.elapsed();
   } else {

@@ -89,6 +89,25 @@ Workspace& workspace(Context& ctx, const ReconSettings& s, int w, int h) {
 
 }  // namespace
 
+ReconSettings recon_settings(const std::string& norm, float alpha, const std::string& solver) {
+  ReconSettings s;
+  if (norm == "l1" || norm == "l2") {
+    s.norm = norm == "l1" ? ReconNorm::L1 : ReconNorm::L2;
+  } else {
+    throw Error("unknown reconstruction '" + norm + "' (expected l1 or l2)");
+  }
+  if (solver == "fast" || solver == "cg") {
+    s.solver = solver == "fast" ? ReconSettings::Solver::Fast : ReconSettings::Solver::CG;
+  } else {
+    throw Error("unknown reconstruction solver '" + solver + "' (expected fast or cg)");
+  }
+  if (!std::isfinite(alpha) || alpha < 0) {
+    throw Error("reconstruction alpha must be a finite value >= 0, got " + std::to_string(alpha));
+  }
+  s.alpha = alpha;
+  return s;
+}
+
 ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
                         const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb,
                         const ReconSettings& settings, Stats* stats) {

@@ -3,6 +3,7 @@
 // per colour channel, in the L2 norm (one linear solve) or the L1 norm (iteratively reweighted
 // least squares), from a primal P and forward-difference gradients G, in kernels on the device.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "device/context.h"
@@ -38,6 +39,10 @@ struct ReconResult {
   double seconds = 0;
   double energy = 0;       // objective value (sum over channels) of the result, in the chosen norm
 };
+
+// Settings from their command-line names: norm "l1" | "l2", solver "fast" | "cg". Throws
+// gdr::Error naming an unknown value.
+ReconSettings recon_settings(const std::string& norm, float alpha, const std::string& solver);
 
 // Images are interleaved RGB float, row-major from the top row. dx(x,y) = I(x+1,y) - I(x,y) for
 // x < width-1 and dy(x,y) = I(x,y+1) - I(x,y) for y < height-1; the last column of dx and last

@@ -2,6 +2,9 @@
 // behind when it fails, and its informational commands succeed.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "cli/cli_harness.h"
 #include "image/image.h"
 #include "image/image_io.h"
@@ -151,6 +154,28 @@ TEST(Cli, NothingToDoIsAUsageError) {
   TempDir dir;
   CliResult r = run_gdrender("", dir);
   EXPECT_EQ(r.code, 2) << r.output;
+}
+
+TEST(Cli, UnknownReconSolverIsRejected) {
+  TempDir dir;
+  CliResult r = run_gdrender(kCornell + " --integrator gpt --recon-solver bogus -D res=8 --spp 1 -o out.exr", dir);
+  expect_failure(r, "--recon-solver", dir);
+}
+
+// Both solvers reconstruct a saved render and record which one ran.
+TEST(Cli, ReconstructWithEitherSolver) {
+  TempDir dir;
+  CliResult render = run_gdrender(kCornell + " --integrator gpt --recon none -D res=16 --spp 2 -o in.exr", dir);
+  ASSERT_EQ(render.code, 0) << render.output;
+  for (const char* solver : {"fast", "cg"}) {
+    SCOPED_TRACE(solver);
+    CliResult r = run_gdrender(std::string("--reconstruct in.exr -o out.exr --stats s.json --recon-solver ") + solver, dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_EQ(read_image(dir.file("out.exr")).width, 16);
+    std::ifstream stats(dir.file("s.json"));
+    std::string json((std::istreambuf_iterator<char>(stats)), std::istreambuf_iterator<char>());
+    EXPECT_NE(json.find(std::string("\"solver\": \"") + solver + "\""), std::string::npos) << json;
+  }
 }
 
 TEST(Cli, ReconstructWithoutLayersIsRejected) {

@@ -37,7 +37,9 @@ TEST(ReconstructCommand, RoundTripThroughExr) {
     SCOPED_TRACE(norm);
     Stats stats;
     std::string out = (dir / (std::string("out_") + norm + ".exr")).string();
-    EXPECT_EQ(reconstruct_command((dir / "in.exr").string(), out, norm, 0.2f, test::default_context(), &stats), 0);
+    EXPECT_EQ(reconstruct_command((dir / "in.exr").string(), out, recon_settings(norm, 0.2f, "fast"),
+                                  test::default_context(), &stats),
+              0);
     Image result = read_image(out);
     ASSERT_EQ(result.width, g.w);
     ASSERT_EQ(result.height, g.h);
@@ -60,7 +62,8 @@ TEST(ReconstructCommand, MissingLayerIsNamed) {
   std::string path = (dir / "no_dx.exr").string();
   write_exr(path, in);
   try {
-    reconstruct_command(path, (dir / "out.exr").string(), "l2", 0.2f, test::default_context(), nullptr);
+    reconstruct_command(path, (dir / "out.exr").string(), recon_settings("l2", 0.2f, "fast"),
+                        test::default_context(), nullptr);
     FAIL() << "a missing dx layer must be reported";
   } catch (const Error& e) {
     std::string msg = e.what();
@@ -68,8 +71,9 @@ TEST(ReconstructCommand, MissingLayerIsNamed) {
     EXPECT_NE(msg.find("'dx'"), std::string::npos) << msg;
   }
   EXPECT_FALSE(fs::exists(dir / "out.exr"));
-  EXPECT_THROW(reconstruct_command(path, (dir / "out.exr").string(), "l3", 0.2f,
-                                   test::default_context(), nullptr), Error);
+  EXPECT_THROW(recon_settings("l3", 0.2f, "fast"), Error);
+  EXPECT_THROW(recon_settings("l1", 0.2f, "direct"), Error);
+  EXPECT_THROW(recon_settings("l1", NAN, "fast"), Error);
   fs::remove_all(dir);
 }
 

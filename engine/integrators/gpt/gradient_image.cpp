@@ -6,20 +6,19 @@
 
 namespace gdr {
 
-Image gradient_image(Context& ctx, const GradientImages& g, const std::string& recon, float alpha, Stats* stats) {
+Image gradient_image(Context& ctx, const GradientImages& g,
+                     const std::optional<ReconSettings>& recon, Stats* stats) {
   std::vector<float> rgb = g.primal;
-  if (recon != "none") {
-    ReconSettings settings;
-    settings.norm = recon == "l2" ? ReconNorm::L2 : ReconNorm::L1;
-    settings.alpha = alpha;
+  if (recon) {
     std::vector<float> indirect = g.primal;
     bool has_direct = g.direct.size() == indirect.size();
     if (has_direct) {
       for (size_t i = 0; i < indirect.size(); ++i) indirect[i] -= g.direct[i];
     }
-    ReconResult r = reconstruct(ctx, g.width, g.height, indirect, g.dx, g.dy, settings, stats);
-    log::verbose("reconstruction (", recon, ", alpha ", alpha, "): ", r.iterations, " iterations, residual ",
-                 r.residual, ", ", r.seconds, " s");
+    ReconResult r = reconstruct(ctx, g.width, g.height, indirect, g.dx, g.dy, *recon, stats);
+    log::verbose("reconstruction (", recon->norm == ReconNorm::L1 ? "L1" : "L2", ", alpha ",
+                 recon->alpha, "): ", r.iterations, " iterations, residual ", r.residual, ", ",
+                 r.seconds, " s");
     rgb = r.rgb;
     if (has_direct) {
       for (size_t i = 0; i < rgb.size(); ++i) rgb[i] += g.direct[i];

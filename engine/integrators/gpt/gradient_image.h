@@ -2,16 +2,19 @@
 // (primal - direct) from the gradients, plus the directly seen emission that the gradients leave
 // out; the layers primal, dx, dy, direct and variance are kept beside it.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "device/context.h"
 #include "image/image.h"
 #include "integrators/gpt/gradient_path_tracer.h"
+#include "recon/reconstruct.h"
 
 namespace gdr {
 
-// recon: "l1", "l2" or "none" (R,G,B = the primal).
-Image gradient_image(Context& ctx, const GradientImages& layers, const std::string& recon, float alpha, Stats* stats);
+// R,G,B reconstructed with `recon`, or the primal without it.
+Image gradient_image(Context& ctx, const GradientImages& layers,
+                     const std::optional<ReconSettings>& recon, Stats* stats);
 
 // The layers of a saved render (primal, dx, dy required; direct and variance optional).
 // Throws InputError naming `path` and the missing layer.
