@@ -38,9 +38,10 @@ Multigrid::Multigrid(Context& ctx, const Planes& fine)
       l->b = &l->own_b;
     }
     l->x = g.buffer(ctx);
-    l->tmp = g.buffer(ctx);
+    const bool coarsest = g.w * g.h <= kCoarsestPixels || (g.w == 1 && g.h == 1);
+    if (coarsest) l->tmp = g.buffer(ctx);  // only the coarsest level smooths on its own
     levels_.push_back(std::move(l));
-    if (g.w * g.h <= kCoarsestPixels || (g.w == 1 && g.h == 1)) break;
+    if (coarsest) break;
     g = g.coarse();
   }
 }

@@ -27,7 +27,7 @@ class Multigrid {
     Planes grid;
     PlaneBuffer own_wp, own_wx, own_wy, own_step, own_b;
     PlaneBuffer *wp = nullptr, *wx = nullptr, *wy = nullptr, *step = nullptr, *b = nullptr;
-    PlaneBuffer x, tmp;
+    PlaneBuffer x, tmp;  // tmp: the coarsest level's Jacobi sweeps
   };
   void smooth(Level& l, int sweeps);
   std::vector<std::unique_ptr<Level>> levels_;
