@@ -16,13 +16,23 @@ PlaneBuffer Planes::buffer(Context& ctx) const {
   return b;
 }
 
-int recon_vector_width(const Context& ctx) {
-  if (const char* v = std::getenv("GDR_RECON_VECTOR"); v && *v) {
-    if (std::strcmp(v, "1") == 0) return 1;
-    if (std::strcmp(v, "16") == 0) return 16;
-    throw Error(std::string("GDR_RECON_VECTOR must be 1 or 16, not '") + v + "'");
+int recon_vector_width(Context& ctx) {
+  // Fixed at the first call for the life of the context: its programs and buffers agree on it.
+  std::shared_ptr<void>& kept = ctx.kept("recon/vector_width");
+  if (!kept) {
+    int vec = ctx.is_cpu() ? 16 : 1;
+    if (const char* v = std::getenv("GDR_RECON_VECTOR"); v && *v) {
+      if (std::strcmp(v, "1") == 0) {
+        vec = 1;
+      } else if (std::strcmp(v, "16") == 0) {
+        vec = 16;
+      } else {
+        throw Error(std::string("GDR_RECON_VECTOR must be 1 or 16, not '") + v + "'");
+      }
+    }
+    kept = std::make_shared<int>(vec);
   }
-  return ctx.is_cpu() ? 16 : 1;
+  return *static_cast<int*>(kept.get());
 }
 
 std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file) {

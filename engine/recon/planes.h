@@ -31,8 +31,9 @@ struct Planes {
 };
 
 // Floats per work item on this device: 16 on CPUs, 1 otherwise; $GDR_RECON_VECTOR (1 or 16)
-// overrides it, so that the GPU form of the kernels can be checked on a CPU device.
-int recon_vector_width(const Context& ctx);
+// overrides it, so that the GPU form of the kernels can be checked on a CPU device. Read at the
+// first call for a context and kept with it.
+int recon_vector_width(Context& ctx);
 
 // Builds (once per context) a kernels/recon program with the defines for this device.
 std::shared_ptr<Program> recon_program(Context& ctx, const std::string& file);
