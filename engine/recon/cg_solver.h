@@ -1,7 +1,7 @@
 // Baseline: conjugate gradients on the normal equations A x = b, all vector work in kernels; the
 // host reads one float4 (the residual norms) per iteration to decide when to stop.
 #pragma once
-#include "recon/recon_system.h"
+#include "recon/convergence.h"
 
 namespace gdr {
 
@@ -19,7 +19,8 @@ class CgSolver {
   Planes grid_;
   DeviceDots dots_;
   PlaneBuffer p_, q_;
-  Kernel apply_, residual_, update_xr_, update_p_;
+  Convergence convergence_;
+  Kernel apply_, update_xr_, update_p_;
 };
 
 }  // namespace gdr

@@ -10,28 +10,19 @@ FastSolver::FastSolver(Context& ctx, int width, int height)
       mg_(ctx, grid_),
       p_{grid_.buffer(ctx), grid_.buffer(ctx)},
       q_(grid_.buffer(ctx)),
-      residual_(recon_program(ctx, "recon/operator.cl")->kernel("recon_residual")),
+      convergence_(ctx),
       update_p_apply_dot_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_p_apply_dot")),
       update_xr_dot_(recon_program(ctx, "recon/cg.cl")->kernel("cg_update_xr_dot")) {}
 
 SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, double tolerance,
                                bool relative_to_start, bool residual_ready) {
   const Planes& g = grid_;
-  dots_.clear();
   PlaneBuffer& r = *sys.r;
-  if (!residual_ready) {
-    residual_.args(*sys.x, *sys.b, *sys.wp, *sys.wx, *sys.wy, g.ws, g.h, r);
-    g.run(residual_);
-  }
-  dots_.dot(*sys.b, *sys.b, g, DeviceDots::kBB);
-  dots_.dot(r, r, g, DeviceDots::kRR);
-  const cl_float4 rr0 = dots_.read(DeviceDots::kRR);
-  const cl_float4 bb = dots_.read(DeviceDots::kBB);
-  // Stopping is judged against |b|, or for a warm-started IRLS round against its first residual.
-  const cl_float4 ref = relative_to_start ? rr0 : bb;
   SolveOutcome out;
-  out.residual = relative_residual(rr0, bb, rr0);
-  if (relative_residual(rr0, ref, rr0) <= tolerance || max_iterations <= 0) return out;
+  if (!convergence_.start(sys, dots_, max_iterations, tolerance, relative_to_start, residual_ready,
+                          out)) {
+    return out;
+  }
 
   if (!mg_ready_) mg_.setup(sys);
   mg_ready_ = true;
@@ -49,9 +40,7 @@ SolveOutcome FastSolver::solve(const LinearSystem& sys, int max_iterations, doub
                         g.h, dots_.partial());
     dots_.reduce(update_xr_dot_, g, DeviceDots::kRR);
     out.iterations = it + 1;
-    const cl_float4 rr = dots_.read(DeviceDots::kRR);
-    out.residual = relative_residual(rr, bb, rr0);
-    if (relative_residual(rr, ref, rr0) <= tolerance || it + 1 == max_iterations) break;
+    if (convergence_.reached(dots_.read(DeviceDots::kRR), out) || it + 1 == max_iterations) break;
     z = &mg_.apply(r, dots_, rz_next);
     beta_num = rz_next;
     beta_den = rz;

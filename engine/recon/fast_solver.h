@@ -2,6 +2,7 @@
 // three fused passes over the image and the V-cycle: p update with q = A p and p * q, the x/r
 // update with r * r, and z = M r with r * z.
 #pragma once
+#include "recon/convergence.h"
 #include "recon/multigrid.h"
 
 namespace gdr {
@@ -21,7 +22,8 @@ class FastSolver {
   Multigrid mg_;
   bool mg_ready_ = false;
   PlaneBuffer p_[2], q_;
-  Kernel residual_, update_p_apply_dot_, update_xr_dot_;
+  Convergence convergence_;
+  Kernel update_p_apply_dot_, update_xr_dot_;
 };
 
 }  // namespace gdr
