@@ -28,6 +28,15 @@ const test::GradientImage& frame() {
   return g;
 }
 
+// The benchmark frame's L2 system (alpha 0.2), ready to solve.
+ReconSystem l2_problem(Context& ctx) {
+  const auto& g = frame();
+  ReconSystem problem(ctx, kW, kH, g.primal, g.dx, g.dy);
+  problem.set_l2_weights(0.2f);
+  problem.build_rhs();
+  return problem;
+}
+
 // Device bytes one baseline CG iteration moves per pixel, in images of 3 floats (12 B): apply
 // reads x and three weights and writes Ap (5), dot(p, Ap) reads 2, the x/r update reads 4 and
 // writes 2 (6), dot(r, r) reads 1, the p update reads 2 and writes 1 (3).
@@ -35,10 +44,7 @@ constexpr double kCgBytesPerPixel = 12.0 * (5 + 2 + 6 + 1 + 3);
 
 void BM_ReconCgIteration(benchmark::State& state) {
   Context& ctx = test::default_context();
-  const auto& g = frame();
-  ReconSystem problem(ctx, kW, kH, g.primal, g.dx, g.dy);
-  problem.set_l2_weights(0.2f);
-  problem.build_rhs();
+  ReconSystem problem = l2_problem(ctx);
   CgSolver cg(ctx, kW, kH);
   const int iters = 10;
   for (auto _ : state) cg.solve(problem.system(), iters, 0.0);
@@ -53,10 +59,7 @@ BENCHMARK(BM_ReconCgIteration)->Unit(benchmark::kMillisecond)->UseRealTime();
 // One multigrid-preconditioned CG iteration (with its V-cycle).
 void BM_ReconFastIteration(benchmark::State& state) {
   Context& ctx = test::default_context();
-  const auto& g = frame();
-  ReconSystem problem(ctx, kW, kH, g.primal, g.dx, g.dy);
-  problem.set_l2_weights(0.2f);
-  problem.build_rhs();
+  ReconSystem problem = l2_problem(ctx);
   FastSolver fast(ctx, kW, kH);
   fast.setup(problem.system());
   const int iters = 5;
@@ -70,10 +73,7 @@ BENCHMARK(BM_ReconFastIteration)->Unit(benchmark::kMillisecond)->UseRealTime();
 // The direct L2 solve alone (DCT along y, tridiagonal along x, inverse DCT).
 void BM_ReconDctSolve(benchmark::State& state) {
   Context& ctx = test::default_context();
-  const auto& g = frame();
-  ReconSystem problem(ctx, kW, kH, g.primal, g.dx, g.dy);
-  problem.set_l2_weights(0.2f);
-  problem.build_rhs();
+  ReconSystem problem = l2_problem(ctx);
   DctSolver dct(ctx, kW, kH);
   for (auto _ : state) dct.solve(problem.system(), 0.2f);
   state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
@@ -83,10 +83,7 @@ BENCHMARK(BM_ReconDctSolve)->Unit(benchmark::kMillisecond)->UseRealTime();
 // The same CG iterations with deferred kernel timing (launches queued without a wait each).
 void BM_ReconCgIterationDeferred(benchmark::State& state) {
   Context& ctx = test::default_context();
-  const auto& g = frame();
-  ReconSystem problem(ctx, kW, kH, g.primal, g.dx, g.dy);
-  problem.set_l2_weights(0.2f);
-  problem.build_rhs();
+  ReconSystem problem = l2_problem(ctx);
   CgSolver cg(ctx, kW, kH);
   const int iters = 10;
   DeferredTiming deferred(ctx);
