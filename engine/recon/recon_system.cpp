@@ -42,7 +42,7 @@ void ReconSystem::load(const std::vector<float>& primal_rgb, const std::vector<f
   primal_in_.write(primal_rgb);
   dx_in_.write(dx_rgb);
   dy_in_.write(dy_rgb);
-  // Everything not packed below is absent (NaN); x is 0 where the primal is.
+  // Everything not packed below is absent (NaN); x is 0 where the primal is absent.
   const float absent = std::numeric_limits<float>::quiet_NaN();
   P_.fill(absent);
   Gx_.fill(absent);
