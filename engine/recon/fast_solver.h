@@ -10,9 +10,9 @@ namespace gdr {
 class FastSolver {
  public:
   FastSolver(Context& ctx, int width, int height);
-  // Like CgSolver::solve; call setup() after the weights of `sys` change.
-  // (The multigrid levels are built at the first iteration that needs them.)
-  void setup(const LinearSystem&) { mg_ready_ = false; }
+  // Like CgSolver::solve. The multigrid levels are built from the system's weights at the first
+  // iteration that needs them; call weights_changed() when they change.
+  void weights_changed() { mg_ready_ = false; }
   SolveOutcome solve(const LinearSystem& sys, int max_iterations, double tolerance,
                      bool relative_to_start = false, bool residual_ready = false);
 

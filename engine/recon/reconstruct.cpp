@@ -53,7 +53,7 @@ class Solver {
                      bool relative_to_start = false, bool residual_ready = false) {
     LinearSystem sys = problem.system();
     if (!fast_) return cg_->solve(sys, max_iterations, tolerance, relative_to_start, residual_ready);
-    fast_solver_->setup(sys);
+    fast_solver_->weights_changed();
     return fast_solver_->solve(sys, max_iterations, tolerance, relative_to_start, residual_ready);
   }
 

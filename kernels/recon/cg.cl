@@ -51,10 +51,8 @@ __kernel void cg_update_p_apply_dot(__global const float* p_old, __global const 
     float b = recon_ratio(scal, num, den, c);
 #define CG_P_AT(k) (VLOAD(z + (k)) + b * VLOAD(p_old + (k)))
     floatv pi = CG_P_AT(o);
-    floatv qi = VLOAD(wp + o) * pi + VLOAD(wx + o) * (pi - CG_P_AT(o + 1)) +
-                VLOAD(wx + o - 1) * (pi - CG_P_AT(o - 1)) +
-                VLOAD(wy + o) * (pi - CG_P_AT(o + ws)) +
-                VLOAD(wy + o - ws) * (pi - CG_P_AT(o - ws));
+    floatv qi = recon_stencil_at(wp, wx, wy, o, ws, pi, CG_P_AT(o + 1), CG_P_AT(o - 1),
+                                 CG_P_AT(o + ws), CG_P_AT(o - ws));
 #undef CG_P_AT
     VSTORE(pi, p + o);
     VSTORE(qi, q + o);

@@ -94,15 +94,31 @@ RECON_INLINE floatv recon_weight(floatv weight, floatv v) {
   return select(weight, (floatv)(0.0f), RECON_ABSENT(v));
 }
 
-// (A x) at the chunk starting at element o: wp x_i + sum over the pixel's edges of w_e (x_i - x_j),
-// the screened Poisson operator Wp + Dx^T Wx Dx + Dy^T Wy Dy (weights are zero where an edge
-// leaves the image).
+// The screened Poisson operator A = Wp + Dx^T Wx Dx + Dy^T Wy Dy at one pixel: wp v + the sum over
+// its four edges of w_e (v - v_e), from the pixel's own weights wp, wx (edge to the right), wy
+// (edge below), the left neighbour's wx and the upper neighbour's wy (weights are zero where an
+// edge leaves the image), and v at the pixel and its right, left, lower and upper neighbours.
+RECON_INLINE floatv recon_stencil(floatv wp, floatv wx, floatv wy, floatv wx_left, floatv wy_up,
+                                  floatv v, floatv v_right, floatv v_left, floatv v_down,
+                                  floatv v_up) {
+  return wp * v + wx * (v - v_right) + wx_left * (v - v_left) + wy * (v - v_down) +
+         wy_up * (v - v_up);
+}
+
+// The same with the weights read for the chunk starting at element o.
+RECON_INLINE floatv recon_stencil_at(__global const float* wp, __global const float* wx,
+                                     __global const float* wy, int o, int ws, floatv v,
+                                     floatv v_right, floatv v_left, floatv v_down, floatv v_up) {
+  return recon_stencil(VLOAD(wp + o), VLOAD(wx + o), VLOAD(wy + o), VLOAD(wx + o - 1),
+                       VLOAD(wy + o - ws), v, v_right, v_left, v_down, v_up);
+}
+
+// (A x) at the chunk starting at element o.
 RECON_INLINE floatv recon_apply_at(__global const float* x, __global const float* wp,
-                             __global const float* wx, __global const float* wy, int o, int ws) {
-  floatv xi = VLOAD(x + o);
-  return VLOAD(wp + o) * xi + VLOAD(wx + o) * (xi - VLOAD(x + o + 1)) +
-         VLOAD(wx + o - 1) * (xi - VLOAD(x + o - 1)) + VLOAD(wy + o) * (xi - VLOAD(x + o + ws)) +
-         VLOAD(wy + o - ws) * (xi - VLOAD(x + o - ws));
+                                   __global const float* wx, __global const float* wy, int o,
+                                   int ws) {
+  return recon_stencil_at(wp, wx, wy, o, ws, VLOAD(x + o), VLOAD(x + o + 1), VLOAD(x + o - 1),
+                          VLOAD(x + o + ws), VLOAD(x + o - ws));
 }
 
 // Sum of `v` over the work-group (dimension 0); every item of the group must call it.

@@ -77,12 +77,9 @@ RECON_INLINE floatv mg_presmoothed_residual(__global const float* b, __global co
                                       __global const float* wp,
                                       __global const float* wx, __global const float* wy, int o,
                                       int ws) {
-  floatv x0 = mg_x0(b, step, o);
-  floatv ax = VLOAD(wp + o) * x0 + VLOAD(wx + o) * (x0 - mg_x0(b, step, o + 1)) +
-              VLOAD(wx + o - 1) * (x0 - mg_x0(b, step, o - 1)) +
-              VLOAD(wy + o) * (x0 - mg_x0(b, step, o + ws)) +
-              VLOAD(wy + o - ws) * (x0 - mg_x0(b, step, o - ws));
-  return VLOAD(b + o) - ax;
+  return VLOAD(b + o) - recon_stencil_at(wp, wx, wy, o, ws, mg_x0(b, step, o),
+                                         mg_x0(b, step, o + 1), mg_x0(b, step, o - 1),
+                                         mg_x0(b, step, o + ws), mg_x0(b, step, o - ws));
 }
 
 // bc = P^T (b - A x0): pre-smoothing, residual and restriction in one pass. 2D launch over
@@ -100,16 +97,13 @@ __kernel void mg_restrict_presmoothed(__global const float* b, __global const fl
   const int f = gdr_recon_plane(c, wsf, hf) + 2 * cy * wsf + j * MG_ITEM_COLS;
   const int e = gdr_recon_plane(c, wsc, hc) + cy * wsc + j * (MG_ITEM_COLS / 2);
 #if RECON_VEC == 16
-  // mg_presmoothed_residual on both rows, sharing x0 and the edge between them.
+  // mg_presmoothed_residual on both rows, sharing x0 between them.
   const int g = f + wsf;
   float16 x0f = mg_x0(b, step, f), x0g = mg_x0(b, step, g);
-  float16 wv = VLOAD(wy + f);
-  float16 af = VLOAD(wp + f) * x0f + VLOAD(wx + f) * (x0f - mg_x0(b, step, f + 1)) +
-               VLOAD(wx + f - 1) * (x0f - mg_x0(b, step, f - 1)) + wv * (x0f - x0g) +
-               VLOAD(wy + f - wsf) * (x0f - mg_x0(b, step, f - wsf));
-  float16 ag = VLOAD(wp + g) * x0g + VLOAD(wx + g) * (x0g - mg_x0(b, step, g + 1)) +
-               VLOAD(wx + g - 1) * (x0g - mg_x0(b, step, g - 1)) +
-               VLOAD(wy + g) * (x0g - mg_x0(b, step, g + wsf)) + wv * (x0g - x0f);
+  float16 af = recon_stencil_at(wp, wx, wy, f, wsf, x0f, mg_x0(b, step, f + 1),
+                                mg_x0(b, step, f - 1), x0g, mg_x0(b, step, f - wsf));
+  float16 ag = recon_stencil_at(wp, wx, wy, g, wsf, x0g, mg_x0(b, step, g + 1),
+                                mg_x0(b, step, g - 1), mg_x0(b, step, g + wsf), x0f);
   float16 s = VLOAD(b + f) - af + VLOAD(b + g) - ag;
   VSTORE8(s.even + s.odd, bc + e);
 #else
@@ -150,10 +144,9 @@ RECON_INLINE floatv mg_correct_smooth_at(__global const float* b, __global const
   floatv up_l = xc[e + ((fx + 1) >> 1) - 1 - (fx >> 1)], up_r = xc[e + ((fx + 1) >> 1) - (fx >> 1)];
 #endif
   floatv y = mg_x0(b, step, o) + up_c;
-  floatv ay = VLOAD(wp + o) * y + VLOAD(wx + o) * (y - mg_x0(b, step, o + 1) - up_r) +
-              VLOAD(wx + o - 1) * (y - mg_x0(b, step, o - 1) - up_l) +
-              VLOAD(wy + o) * (y - mg_x0(b, step, o + ws) - up_d) +
-              VLOAD(wy + o - ws) * (y - mg_x0(b, step, o - ws) - up_u);
+  floatv ay = recon_stencil_at(wp, wx, wy, o, ws, y, mg_x0(b, step, o + 1) + up_r,
+                               mg_x0(b, step, o - 1) + up_l, mg_x0(b, step, o + ws) + up_d,
+                               mg_x0(b, step, o - ws) + up_u);
   return y + VLOAD(step + o) * (VLOAD(b + o) - ay);
 }
 

@@ -60,6 +60,15 @@ __kernel void recon_weights_l2(__global const float* P, __global const float* Gx
          step + o);
 }
 
+// b = Wp P + Dx^T Wx Gx + Dy^T Wy Gy at one pixel, with (Dx^T v)(x) = v(x-1) - v(x): the weights
+// as in recon_stencil, the inputs at the pixel and (gx_left, gy_up) at its left and upper
+// neighbours; absent inputs count as 0.
+RECON_INLINE floatv recon_rhs_at(floatv wp, floatv wx, floatv wy, floatv wx_left, floatv wy_up,
+                                 floatv p, floatv gx, floatv gy, floatv gx_left, floatv gy_up) {
+  return wp * recon_value(p) - wx * recon_value(gx) - wy * recon_value(gy) +
+         wx_left * recon_value(gx_left) + wy_up * recon_value(gy_up);
+}
+
 // The IRLS weight of a term with residual e: 1/(|e| + reg), so that w e^2 ~ |e| at the current
 // estimate; 0 for an absent term (g NaN).
 RECON_INLINE floatv recon_l1_weight(floatv e, floatv g, float reg) {
@@ -84,9 +93,8 @@ __kernel void recon_weights_l1(__global const float* x, __global const float* P,
   floatv wyi = recon_l1_weight(xd - xi - gy, gy, reg);
   floatv wl = recon_l1_weight(xi - xl - gl, gl, reg);
   floatv wu = recon_l1_weight(xi - xu - gu, gu, reg);
-  floatv bi = wpi * recon_value(p) - wxi * recon_value(gx) - wyi * recon_value(gy) +
-              wl * recon_value(gl) + wu * recon_value(gu);
-  floatv ax = wpi * xi + wxi * (xi - xr) + wl * (xi - xl) + wyi * (xi - xd) + wu * (xi - xu);
+  floatv bi = recon_rhs_at(wpi, wxi, wyi, wl, wu, p, gx, gy, gl, gu);
+  floatv ax = recon_stencil(wpi, wxi, wyi, wl, wu, xi, xr, xl, xd, xu);
   VSTORE(wpi, wp + o);
   VSTORE(wxi, wx + o);
   VSTORE(wyi, wy + o);
@@ -95,18 +103,16 @@ __kernel void recon_weights_l1(__global const float* x, __global const float* P,
   VSTORE(bi - ax, r + o);
 }
 
-// b = Wp P + Dx^T Wx Gx + Dy^T Wy Gy, with (Dx^T v)(x) = v(x-1) - v(x).
+// b from the stored weights (recon_rhs_at).
 __kernel void recon_rhs(__global const float* P, __global const float* Gx,
                         __global const float* Gy, __global const float* wp,
                         __global const float* wx, __global const float* wy, int ws, int h,
                         __global float* b) {
   RECON_CHUNK(o, c, ws, h)
-  floatv s = VLOAD(wp + o) * recon_value(VLOAD(P + o)) -
-             VLOAD(wx + o) * recon_value(VLOAD(Gx + o)) -
-             VLOAD(wy + o) * recon_value(VLOAD(Gy + o)) +
-             VLOAD(wx + o - 1) * recon_value(VLOAD(Gx + o - 1)) +
-             VLOAD(wy + o - ws) * recon_value(VLOAD(Gy + o - ws));
-  VSTORE(s, b + o);
+  VSTORE(recon_rhs_at(VLOAD(wp + o), VLOAD(wx + o), VLOAD(wy + o), VLOAD(wx + o - 1),
+                      VLOAD(wy + o - ws), VLOAD(P + o), VLOAD(Gx + o), VLOAD(Gy + o),
+                      VLOAD(Gx + o - 1), VLOAD(Gy + o - ws)),
+         b + o);
 }
 
 // Per group and channel: the objective sum of |alpha (x - P)| + |dx x - Gx| + |dy x - Gy| over

@@ -61,7 +61,6 @@ void BM_ReconFastIteration(benchmark::State& state) {
   Context& ctx = test::default_context();
   ReconSystem problem = l2_problem(ctx);
   FastSolver fast(ctx, kW, kH);
-  fast.setup(problem.system());
   const int iters = 5;
   for (auto _ : state) fast.solve(problem.system(), iters, 0.0);
   double n = double(state.iterations()) * iters;
