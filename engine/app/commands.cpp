@@ -9,6 +9,8 @@
 #include "device/devices.h"
 #include "image/image_io.h"
 #include "image/image_metrics.h"
+#include "integrators/registry.h"
+#include "render/gradient_images.h"
 #include "scene/describe_scene.h"
 #include "scene/load_scene.h"
 #include "util/error.h"
@@ -24,12 +26,17 @@ int list_devices_command() {
 
 namespace {
 
+int list_integrators_command() {
+  std::fputs(describe_integrators().c_str(), stdout);
+  return 0;
+}
+
 int info_command(const Options& o) {
   DeviceInfo device = select_device(o.device);
   LoadOptions load;
   load.defines = o.defines;
   load.strict = o.strict;
-  load.glossy_threshold = o.shift_threshold;
+  load.glossy_threshold = IntegratorParams(o.integrator_params).non_negative("shift_threshold", GDR_GLOSSY_THRESHOLD);
   Scene scene = load_scene(o.info_scene, load);
   std::printf("%s", describe_scene(scene).c_str());
   std::printf("device: [%d] %s (%s)\n", device.index, device.name.c_str(), device.platform_name.c_str());
@@ -50,6 +57,7 @@ int compare_command(const Options& o) {
 
 int run_command(const Options& options) {
   if (options.list_devices) return list_devices_command();
+  if (options.list_integrators) return list_integrators_command();
   if (!options.info_scene.empty()) return info_command(options);
   if (!options.compare.empty()) return compare_command(options);
   if (!options.reconstruct.empty()) {
@@ -58,9 +66,9 @@ int run_command(const Options& options) {
     std::string out = options.output.empty()
                           ? std::filesystem::path(options.reconstruct).stem().string() + "-recon.exr"
                           : options.output;
-    int code = reconstruct_command(
-        options.reconstruct, out,
-        recon_settings(options.recon, options.alpha, options.recon_solver), ctx, &stats);
+    std::optional<ReconSettings> recon = recon_from_params(IntegratorParams(options.integrator_params));
+    if (!recon) throw Error("--reconstruct needs a reconstruction: --recon l1 or l2, not none");
+    int code = reconstruct_command(options.reconstruct, out, *recon, ctx, &stats);
     if (!options.stats_path.empty()) stats.write_json(options.stats_path);
     return code;
   }

@@ -1,9 +1,12 @@
 #include "app/options.h"
 
+#include "integrators/registry.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <iostream>
+#include <list>
 
 namespace gdr {
 namespace {
@@ -25,6 +28,23 @@ CLI::Validator finite_number(bool allow_zero) {
 const CLI::Validator kFinitePositive = finite_number(false);
 const CLI::Validator kFiniteNonNegative = finite_number(true);
 
+// --integrator takes a registry name.
+CLI::Validator registered_integrator() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        if (integrator_for_name(s)) return {};
+        return "unknown integrator '" + s + "' (available: " + integrator_names() + ")";
+      },
+      "INTEGRATOR");
+}
+
+// An integrator parameter on the command line: kept under its registry name when given.
+struct ParamOption {
+  CLI::Option* option;
+  std::string name;
+  std::string value;
+};
+
 }  // namespace
 
 std::optional<int> parse_options(int argc, char** argv, Options& o) {
@@ -42,7 +62,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(CLI::ExistingFile);
   app.add_option("--error-image", o.error_image, "With --compare: write a false-colour relMSE image (PNG)");
   app.add_option("-o,--output", o.output, "Output image (.exr; a tone-mapped .png is written beside it)");
-  app.add_option("--integrator", o.integrator, "pt | gpt (default: the scene's integrator, else pt)");
+  app.add_option("--integrator", o.integrator, "Integrator: " + integrator_names() +
+                                                   " (default: the scene's integrator, else pt; see --list-integrators)")
+      ->check(registered_integrator());
+  app.add_flag("--list-integrators", o.list_integrators, "List the integrators and their parameters, and exit");
   app.add_option("--spp", o.spp, "Samples per pixel")->check(kFinitePositive);
   app.add_option("--time", o.time_budget, "Render for this many seconds")->check(kFinitePositive);
   app.add_option("--seed", o.seed, "Random seed");
@@ -53,28 +76,40 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--stats", o.stats_path, "Write timers and counters to this JSON file");
   app.add_option("--threads", o.threads, "Host and CPU-device threads (default: the usable CPUs)")
       ->check(kFinitePositive);
-  app.add_flag("--aux", o.aux, "Also write albedo, normal and depth layers (first hit; pt)");
   app.add_flag("--strict", o.strict, "Unsupported scene features are errors instead of warnings");
   app.add_option("--filter", o.filter, "Pixel filter: box | tent | gaussian (default: the scene's)")
       ->check(CLI::IsMember({"box", "tent", "gaussian"}));
   app.add_option("--max-depth", o.max_depth, "Maximum path length (default: the scene's, else 16)")
       ->check(CLI::Range(1, 1024));
-  app.add_option("--strategy", o.strategy,
-                 "Path tracing: mis (BSDF and light sampling) | bsdf (BSDF only) | light (light sampling only)")
+
+  // Integrator parameters (the registry says which integrator reads which).
+  std::list<ParamOption> params;  // CLI11 keeps references to the values: no reallocation
+  auto param = [&](const std::string& flag, const std::string& name, const std::string& help) {
+    params.push_back({nullptr, name, ""});
+    params.back().option = app.add_option(flag, params.back().value, integrators_reading(name) + ": " + help)
+                               ->group("Integrator parameters");
+    return params.back().option;
+  };
+  param("--strategy", "strategy",
+        "mis (BSDF and light sampling) | bsdf (BSDF only) | light (light sampling only)")
       ->check(CLI::IsMember({"mis", "bsdf", "light"}));
-  app.add_option("--shift", o.shift, "Gradient-domain shift mapping: hybrid | replay")
-      ->check(CLI::IsMember({"hybrid", "replay"}));
-  app.add_option("--shift-threshold", o.shift_threshold,
-                 "Roughness at or below which a vertex counts as glossy/specular (not reconnected)")
+  params.push_back({nullptr, "aux", "true"});
+  params.back().option = app.add_flag("--aux")
+                             ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
+                             ->group("Integrator parameters");
+  param("--shift", "shift", "shift mapping: hybrid (default) | replay")->check(CLI::IsMember({"hybrid", "replay"}));
+  param("--shift-threshold", "shift_threshold",
+        "roughness at or below which a vertex counts as glossy/specular (not reconnected; default 0.001)")
       ->check(kFiniteNonNegative);
-  app.add_option("--recon", o.recon, "Poisson reconstruction: l1 | l2 | none")
+  param("--recon", "recon", "Poisson reconstruction: l1 (default) | l2 | none")
       ->check(CLI::IsMember({"l1", "l2", "none"}));
-  app.add_option("--recon-solver", o.recon_solver,
-                 "Poisson solver: fast (multigrid-preconditioned CG, direct DCT solve for L2) | cg "
-                 "(the published baseline: plain CG, 50 iterations per solve)")
+  param("--recon-solver", "recon_solver",
+        "Poisson solver, also for --reconstruct: fast (multigrid-preconditioned CG, direct DCT solve for L2; "
+        "default) | cg (the published baseline: plain CG, 50 iterations per solve)")
       ->check(CLI::IsMember({"fast", "cg"}));
-  app.add_option("--alpha", o.alpha, "Weight of the primal in the screened Poisson solve")
+  param("--alpha", "alpha", "weight of the primal in the screened Poisson solve, also for --reconstruct (default 0.2)")
       ->check(kFinitePositive);
+  app.footer("Integrators:\n" + describe_integrators());
   auto* verbose = app.add_flag("-v,--verbose", o.verbose, "More log output");
   app.add_flag("-q,--quiet", o.quiet, "Only warnings and errors")->excludes(verbose);
 
@@ -82,6 +117,9 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+  for (const ParamOption& p : params) {
+    if (p.option->count() > 0) o.integrator_params[p.name] = p.value;
   }
   for (const std::string& d : defines) {
     size_t eq = d.find('=');
@@ -91,10 +129,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     }
     o.defines[d.substr(0, eq)] = d.substr(eq + 1);
   }
-  if (!o.list_devices && o.info_scene.empty() && o.reconstruct.empty() && o.scene.empty() &&
+  if (!o.list_devices && !o.list_integrators && o.info_scene.empty() && o.reconstruct.empty() && o.scene.empty() &&
       o.compare.empty()) {
-    std::cerr << "gdrender: nothing to do: give a scene to render, --info SCENE, --reconstruct IN.exr "
-                 "or --list-devices (see --help)\n";
+    std::cerr << "gdrender: nothing to do: give a scene to render, --info SCENE, --reconstruct IN.exr, "
+                 "--list-devices or --list-integrators (see --help)\n";
     return 2;
   }
   return std::nullopt;

@@ -11,6 +11,7 @@ namespace gdr {
 struct Options {
   // What to do (the first that is set wins, in this order).
   bool list_devices = false;
+  bool list_integrators = false;
   std::string info_scene;   // --info SCENE
   std::string reconstruct;  // --reconstruct IN.exr
   std::vector<std::string> compare;  // --compare A.exr REFERENCE.exr
@@ -27,17 +28,13 @@ struct Options {
   std::string stats_path;
   int threads = 0;
   bool strict = false;
-  bool aux = false;  // albedo, normal, depth layers
   std::string filter;  // overrides the scene's reconstruction filter
-  std::string strategy = "mis";  // pt: mis | bsdf | light
   int max_depth = -1;  // overrides the scene's integrator max_depth (-1: keep)
 
-  // Gradient-domain settings.
-  std::string shift = "hybrid";
-  float shift_threshold = 0.001f;
-  std::string recon = "l1";
-  std::string recon_solver = "fast";
-  float alpha = 0.2f;
+  // Integrator parameters given on the command line (--strategy, --aux, --shift,
+  // --shift-threshold, --recon, --recon-solver, --alpha), by their registry names (strategy,
+  // aux, shift, shift_threshold, recon, recon_solver, alpha). Only those given are present.
+  std::map<std::string, std::string> integrator_params;
 
   bool verbose = false;
   bool quiet = false;

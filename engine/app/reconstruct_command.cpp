@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "image/image_io.h"
-#include "integrators/gpt/gradient_image.h"
+#include "render/gradient_images.h"
 #include "util/error.h"
 #include "util/log.h"
 

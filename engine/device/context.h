@@ -6,6 +6,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "device/cl.h"
@@ -128,11 +130,13 @@ class Kernel {
     static_assert(std::is_trivially_copyable_v<T>, "kernel arguments are plain data");
     cl_check(clSetKernelArg(kernel_, index, sizeof(T), &value), "clSetKernelArg");
   }
-  // Sets all arguments in order.
+  // Sets all arguments in order. An argument that stands for several kernel parameters (the
+  // scene's buffers: DeviceScene) binds them itself through `cl_uint bind_to(Kernel&, cl_uint
+  // first) const`, which returns how many it set.
   template <class... Args>
   Kernel& args(const Args&... a) {
     cl_uint i = 0;
-    (set_arg(i++, a), ...);
+    ((i += bind(i, a)), ...);
     return *this;
   }
 
@@ -144,6 +148,21 @@ class Kernel {
   const std::string& name() const { return name_; }
 
  private:
+  template <class T, class = void>
+  struct binds_itself : std::false_type {};
+  template <class T>
+  struct binds_itself<T, std::void_t<decltype(std::declval<const T&>().bind_to(std::declval<Kernel&>(), 0u))>>
+      : std::true_type {};
+  template <class T>
+  cl_uint bind(cl_uint index, const T& value) {
+    if constexpr (binds_itself<T>::value) {
+      return value.bind_to(*this, index);
+    } else {
+      set_arg(index, value);
+      return 1;
+    }
+  }
+
   void launch(cl_uint dims, const size_t* global, const size_t* local, size_t items);
   Context* context_;
   cl_kernel kernel_;

@@ -22,6 +22,8 @@ namespace {
 void read_integrator(LoadContext& ctx, const XmlNode& node) {
   Props p = ctx.props(node);
   ctx.scene.integrator = p.type();
+  ctx.scene.integrator_file = node.file;
+  ctx.scene.integrator_line = node.line;
   ctx.scene.max_depth = p.get_int("max_depth", -1);
 }
 

@@ -12,7 +12,7 @@ namespace gdr {
 struct LoadOptions {
   std::map<std::string, std::string> defines;  // override the scene's <default> values
   bool strict = false;                         // unsupported features are errors, not warnings
-  float glossy_threshold = 0.001f;             // alpha below which a rough surface is near-delta
+  float glossy_threshold = GDR_GLOSSY_THRESHOLD;  // alpha below which a rough surface is near-delta
 };
 
 // Throws gdr::InputError (file, line, problem) for malformed XML, missing files, bad values,

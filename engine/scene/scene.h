@@ -34,6 +34,8 @@ struct Scene {
   GdrCamera camera{};
   int spp = 16;             // the scene's sampler sample_count
   std::string integrator;   // the scene's integrator type ("path", ...), empty if none
+  std::string integrator_file;  // where the <integrator> element is, for messages
+  int integrator_line = 0;
   int max_depth = -1;       // the integrator's max_depth (-1: unbounded in Mitsuba)
 
   SceneFeatures features;

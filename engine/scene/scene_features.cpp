@@ -7,6 +7,7 @@
 
 #include "scene/layout_checks.h"
 #include "scene/scene.h"
+#include "shared/material_class.h"
 
 namespace gdr {
 namespace {
@@ -20,18 +21,16 @@ const char* const kBsdfDefines[BSDF_TYPE_COUNT] = {"DIFFUSE",         "CONDUCTOR
 const char* const kLightNames[LIGHT_TYPE_COUNT] = {"area", "point", "spot", "directional", "constant", "envmap"};
 const char* const kLightDefines[LIGHT_TYPE_COUNT] = {"AREA", "POINT", "SPOT", "DIRECTIONAL", "CONSTANT", "ENVMAP"};
 
-// The same classification as the kernels' bsdf_is_delta / bsdf_has_delta_lobe / bsdf_roughness
-// (kernels/bsdf/bsdf.h): an index-matched rough dielectric passes light straight through.
-bool index_matched(const GdrMaterial& m) {
-  return m.type == BSDF_ROUGH_DIELECTRIC && std::fabs(m.eta[0] - 1.0f) < 1e-4f;
+// The kernels' classification (kernels/shared/material_class.h), as bsdf_from_material() sees the
+// material: delta lobes, and the roughness the shifts compare with the glossy threshold.
+bool has_delta_lobe(const GdrMaterial& m) { return material_has_delta_lobe(m.type, m.eta[0]); }
+float roughness(const GdrMaterial& m) {
+  return material_roughness(m.type, m.eta[0], material_alpha(m.alpha_u), material_alpha(m.alpha_v));
 }
-bool is_delta_bsdf(const GdrMaterial& m) {
-  return m.type == BSDF_CONDUCTOR || m.type == BSDF_DIELECTRIC || m.type == BSDF_THIN_DIELECTRIC ||
-         m.type == BSDF_PLASTIC || index_matched(m);
-}
-bool is_rough_bsdf(const GdrMaterial& m) {
-  return (m.type == BSDF_ROUGH_CONDUCTOR || m.type == BSDF_ROUGH_DIELECTRIC || m.type == BSDF_ROUGH_PLASTIC) &&
-         !index_matched(m);
+// A microfacet lobe smooth enough that the shifts treat it as specular.
+bool near_delta(const GdrMaterial& m, float threshold) {
+  return !has_delta_lobe(m) && m.type != BSDF_DIFFUSE &&
+         !material_is_diffuse(roughness(m), threshold);
 }
 
 // "3 materials: a, b, c" listing at most four names.
@@ -63,8 +62,8 @@ SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold)
     const GdrMaterial& m = scene.materials[i];
     if (m.type < 0 || m.type >= BSDF_TYPE_COUNT) continue;
     f.bsdf[m.type] = true;
-    if (is_delta_bsdf(m)) f.delta_surfaces = true;
-    if (is_rough_bsdf(m) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) f.near_delta_surfaces = true;
+    if (has_delta_lobe(m)) f.delta_surfaces = true;
+    if (near_delta(m, glossy_threshold)) f.near_delta_surfaces = true;
     if (m.reflectance_texture >= 0) f.textures = true;
   }
   for (const GdrLight& l : scene.lights) {
@@ -72,17 +71,16 @@ SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold)
     f.light[l.type] = true;
     if (l.type == LIGHT_POINT || l.type == LIGHT_SPOT || l.type == LIGHT_DIRECTIONAL) f.delta_lights = true;
     if (l.type == LIGHT_CONSTANT || l.type == LIGHT_ENVMAP) f.environment = true;
-    if (l.type == LIGHT_ENVMAP) f.textures = true;
   }
   f.glossy_threshold = glossy_threshold;
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     if (!used[i]) continue;
     const GdrMaterial& m = scene.materials[i];
     std::string name = i < scene.material_names.size() ? scene.material_names[i] : std::to_string(i);
-    if (is_delta_bsdf(m)) f.delta_materials.push_back(name + " (" + bsdf_type_name(m.type) + ")");
-    if (is_rough_bsdf(m) && std::min(m.alpha_u, m.alpha_v) <= glossy_threshold) {
+    if (has_delta_lobe(m)) f.delta_materials.push_back(name + " (" + bsdf_type_name(m.type) + ")");
+    if (near_delta(m, glossy_threshold)) {
       std::ostringstream s;
-      s << name << " (" << bsdf_type_name(m.type) << ", alpha " << std::min(m.alpha_u, m.alpha_v) << ")";
+      s << name << " (" << bsdf_type_name(m.type) << ", alpha " << roughness(m) << ")";
       f.near_delta_materials.push_back(s.str());
     }
   }
@@ -108,7 +106,7 @@ std::string SceneFeatures::describe() const {
     if (light[i]) lights.push_back(kLightNames[i]);
   out << "BSDFs: " << (bsdfs.empty() ? "none" : list_names(bsdfs)) << "\n";
   out << "lights: " << (lights.empty() ? "none" : list_names(lights)) << "\n";
-  if (textures) out << "textures: on (bitmap/checkerboard reflectance or environment map)\n";
+  if (textures) out << "textures: on (bitmap/checkerboard reflectance)\n";
   if (specular_chains()) {
     out << "specular chains: on (";
     if (delta_surfaces) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "shared/material_class.h"
 #include "shared/scene_types.h"
 
 namespace gdr {
@@ -14,7 +15,7 @@ struct Scene;
 struct SceneFeatures {
   bool bsdf[BSDF_TYPE_COUNT] = {};    // which BSDF types occur
   bool light[LIGHT_TYPE_COUNT] = {};  // which emitter types occur
-  bool textures = false;              // any bitmap or checkerboard texture
+  bool textures = false;              // a material reflectance is a bitmap or checkerboard texture
   bool delta_surfaces = false;        // smooth conductor/dielectric/plastic: specular (S) vertices
   bool near_delta_surfaces = false;   // rough BSDFs with alpha below the glossy threshold
   bool delta_lights = false;          // point, spot or directional lights
@@ -24,7 +25,7 @@ struct SceneFeatures {
   // near-delta, and the threshold used.
   std::vector<std::string> delta_materials;
   std::vector<std::string> near_delta_materials;
-  float glossy_threshold = 0.001f;
+  float glossy_threshold = GDR_GLOSSY_THRESHOLD;
 
   // Specular chains (caustics, S-D-S paths) are possible: enables the manifold machinery.
   bool specular_chains() const { return delta_surfaces || near_delta_surfaces; }
@@ -37,7 +38,7 @@ struct SceneFeatures {
 
 // Computes the features of a loaded scene. `glossy_threshold` is the roughness (alpha) below
 // which a rough surface is treated as near-delta.
-SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold = 0.001f);
+SceneFeatures compute_scene_features(const Scene& scene, float glossy_threshold = GDR_GLOSSY_THRESHOLD);
 
 const char* bsdf_type_name(int type);
 const char* light_type_name(int type);

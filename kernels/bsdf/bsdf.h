@@ -24,6 +24,7 @@
 #include "bsdf/plastic.h"
 #include "core/frame.h"
 #include "core/math.h"
+#include "shared/material_class.h"
 #include "shared/scene_types.h"
 
 #if !defined(GDR_BSDF_SELECTED) || defined(GDR_BSDF_DIFFUSE)
@@ -202,30 +203,14 @@ inline int bsdf_sample(const Bsdf* b, float3 wo, float3 u, BsdfSample* s) {
 }
 
 // All components are delta (no bsdf_eval / bsdf_pdf contribution).
-inline int bsdf_is_delta(const Bsdf* b) {
-  return b->type == BSDF_CONDUCTOR || b->type == BSDF_DIELECTRIC ||
-         b->type == BSDF_THIN_DIELECTRIC ||
-         (b->type == BSDF_ROUGH_DIELECTRIC && dielectric_index_matched(b));
-}
+inline int bsdf_is_delta(const Bsdf* b) { return material_is_delta(b->type, b->eta.x); }
 
 // Some component is delta (smooth plastic's coating reflection, besides the pure delta types).
-inline int bsdf_has_delta_lobe(const Bsdf* b) {
-  return bsdf_is_delta(b) || b->type == BSDF_PLASTIC;
-}
+inline int bsdf_has_delta_lobe(const Bsdf* b) { return material_has_delta_lobe(b->type, b->eta.x); }
 
-inline int bsdf_has_diffuse_lobe(const Bsdf* b) {
-  return b->type == BSDF_DIFFUSE || b->type == BSDF_PLASTIC || b->type == BSDF_ROUGH_PLASTIC;
-}
+inline int bsdf_has_diffuse_lobe(const Bsdf* b) { return material_has_diffuse_lobe(b->type); }
 
-// Roughness that decides how gradient-domain shifts treat the vertex: 0 for a delta lobe, the
-// smaller alpha of a microfacet lobe, 1 for diffuse; the minimum over a material's lobes.
+// Roughness that decides how gradient-domain shifts treat the vertex (shared/material_class.h).
 inline float bsdf_roughness(const Bsdf* b) {
-  switch (b->type) {
-    case BSDF_DIFFUSE: return 1.0f;
-    case BSDF_ROUGH_CONDUCTOR:
-    case BSDF_ROUGH_PLASTIC: return fmin(b->alpha_u, b->alpha_v);
-    case BSDF_ROUGH_DIELECTRIC:
-      return dielectric_index_matched(b) ? 0.0f : fmin(b->alpha_u, b->alpha_v);
-    default: return 0.0f;  // conductor, dielectric, thin dielectric, plastic
-  }
+  return material_roughness(b->type, b->eta.x, b->alpha_u, b->alpha_v);
 }

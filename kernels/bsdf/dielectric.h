@@ -8,13 +8,9 @@
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 
-// |eta - 1| below this: the interface is index-matched and a rough dielectric lets light pass
-// straight through (its refraction half vector would be undefined).
-#define GDR_INDEX_MATCHED_EPS 1e-4f
-
-inline int dielectric_index_matched(const Bsdf* b) {
-  return fabs(b->eta.x - 1.0f) < GDR_INDEX_MATCHED_EPS;
-}
+// An index-matched rough dielectric lets light pass straight through (its refraction half vector
+// would be undefined).
+inline int dielectric_index_matched(const Bsdf* b) { return material_index_matched(BSDF_ROUGH_DIELECTRIC, b->eta.x); }
 
 inline int dielectric_sample(const Bsdf* b, float3 wo, float3 u, BsdfSample* s) {
   float ct, eta_it, eta_ti;

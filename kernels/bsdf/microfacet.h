@@ -5,10 +5,8 @@
 #pragma once
 #include "core/frame.h"
 #include "core/math.h"
+#include "shared/material_class.h"
 #include "shared/scene_types.h"
-
-// Smallest roughness used internally: below it D overflows float precision.
-#define GDR_MIN_ALPHA 1e-4f
 
 inline float microfacet_D(int type, float au, float av, float3 m) {
   float c2 = m.z * m.z;

@@ -5,6 +5,7 @@
 #include "core/geometry.h"
 #include "scene/scene_data.h"
 #include "scene/surface.h"
+#include "shared/environment_table.h"
 
 #if !defined(GDR_LIGHTS_SELECTED)
 #define GDR_LIGHT_AREA 1
@@ -83,14 +84,14 @@ inline int sample_cdf(__global const float* cdf, int n, float u, float* rescaled
   return lo;
 }
 
-// Envmap sampling tables at l->distribution_offset: the rows' cdf (height + 1 values), then each
-// row's cdf over its columns (width + 1 values), built from luminance * sin(theta).
+// Envmap sampling tables at l->distribution_offset (layout: shared/environment_table.h), built
+// from luminance * sin(theta).
 inline float envmap_uv_pdf(const SceneData* s, __global const GdrLight* l, float2 uv) {
   __global const GdrTexture* t = &s->textures[l->texture];
   int w = t->width, h = t->height;
   int c = min((int)(uv.x * w), w - 1), r = min((int)(uv.y * h), h - 1);
-  __global const float* rows = s->env_cdf + l->distribution_offset;
-  __global const float* cols = rows + (h + 1) + r * (w + 1);
+  __global const float* rows = s->env_tables + l->distribution_offset;
+  __global const float* cols = rows + env_table_columns_offset(w, h, r);
   return (rows[r + 1] - rows[r]) * h * (cols[c + 1] - cols[c]) * w;
 }
 
@@ -116,10 +117,10 @@ inline float3 environment_sample(const SceneData* s, __global const GdrLight* l,
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     __global const GdrTexture* t = &s->textures[l->texture];
-    __global const float* rows = s->env_cdf + l->distribution_offset;
+    __global const float* rows = s->env_tables + l->distribution_offset;
     float ur, uc;
     int r = sample_cdf(rows, t->height, u.y, &ur);
-    int c = sample_cdf(rows + (t->height + 1) + r * (t->width + 1), t->width, u.x, &uc);
+    int c = sample_cdf(rows + env_table_columns_offset(t->width, t->height, r), t->width, u.x, &uc);
     float sin_theta;
     float3 d = envmap_direction((float2)((c + uc) / t->width, (r + ur) / t->height), &sin_theta);
     float to_world[12];

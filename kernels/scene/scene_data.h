@@ -1,50 +1,33 @@
 // The scene's device buffers, gathered in one private struct so stage functions take one
-// argument. Each kernel fills it from its arguments with scene_data_make().
+// argument. Each kernel declares SCENE_DATA_ARGS among its parameters and fills the struct with
+// scene_data_make(SCENE_DATA_NAMES, ...). All three are generated from the one list of buffers in
+// shared/scene_buffers.h; the host binds the same list (DeviceScene) where the kernel has it.
 #pragma once
+#include "shared/scene_buffers.h"
 #include "shared/scene_types.h"
 
+#define GDR_SCENE_FIELD(ktype, htype, name, what) __global const ktype* name;
 typedef struct SceneData {
-  __global const GdrTriangle* triangles;
-  __global const float4* positions;
-  __global const float4* normals;
-  __global const float2* uvs;
-  __global const GdrShape* shapes;
-  __global const GdrMaterial* materials;
-  __global const GdrTexture* textures;
-  __global const float4* texels;
-  __global const GdrLight* lights;
-  __global const float* light_cdf;  // light_count + 1 entries, cdf[0] = 0, cdf[light_count] = 1
-  __global const float* env_cdf;    // envmap sampling tables (engine/integrators/environment_distribution.h)
+  GDR_SCENE_BUFFERS(GDR_SCENE_FIELD, GDR_SCENE_FIELD)
   int light_count;
   int env_light;  // index of the environment light, or -1
 } SceneData;
+#undef GDR_SCENE_FIELD
 
-// The argument list every scene-reading kernel declares, and the call that packs it.
-#define SCENE_DATA_ARGS                                                                          \
-  __global const GdrTriangle *triangles, __global const float4 *positions,                      \
-      __global const float4 *normals, __global const float2 *uvs, __global const GdrShape *shapes, \
-      __global const GdrMaterial *materials, __global const GdrTexture *textures,               \
-      __global const float4 *texels, __global const GdrLight *lights, __global const float *light_cdf, \
-      __global const float *env_cdf
+// The parameter list every scene-reading kernel declares, and the same names to pass them on.
+#define GDR_SCENE_PARAM_FIRST(ktype, htype, name, what) __global const ktype* name
+#define GDR_SCENE_PARAM_NEXT(ktype, htype, name, what) , __global const ktype* name
+#define SCENE_DATA_ARGS GDR_SCENE_BUFFERS(GDR_SCENE_PARAM_FIRST, GDR_SCENE_PARAM_NEXT)
+#define GDR_SCENE_NAME_FIRST(ktype, htype, name, what) name
+#define GDR_SCENE_NAME_NEXT(ktype, htype, name, what) , name
+#define SCENE_DATA_NAMES GDR_SCENE_BUFFERS(GDR_SCENE_NAME_FIRST, GDR_SCENE_NAME_NEXT)
 
-// The same arguments by name, to pass them on.
-#define SCENE_DATA_NAMES \
-  triangles, positions, normals, uvs, shapes, materials, textures, texels, lights, light_cdf, env_cdf
-
+#define GDR_SCENE_ASSIGN(ktype, htype, name, what) s.name = name;
 inline SceneData scene_data_make(SCENE_DATA_ARGS, int light_count, int env_light) {
   SceneData s;
-  s.triangles = triangles;
-  s.positions = positions;
-  s.normals = normals;
-  s.uvs = uvs;
-  s.shapes = shapes;
-  s.materials = materials;
-  s.textures = textures;
-  s.texels = texels;
-  s.lights = lights;
-  s.light_cdf = light_cdf;
-  s.env_cdf = env_cdf;
+  GDR_SCENE_BUFFERS(GDR_SCENE_ASSIGN, GDR_SCENE_ASSIGN)
   s.light_count = light_count;
   s.env_light = env_light;
   return s;
 }
+#undef GDR_SCENE_ASSIGN

@@ -42,10 +42,10 @@ inline Surface surface_at(const SceneData* s, uint prim, float b1, float b2) {
 }
 
 // The material's diffuse reflectance at the surface, textured or constant.
-// Scene builds (GDR_LIGHTS_SELECTED) compile the texture lookup only when GDR_TEXTURES is set.
+// Scene builds (GDR_TEXTURES_SELECTED) compile the texture lookup only when GDR_TEXTURES is set.
 inline float3 surface_reflectance(const SceneData* s, const Surface* su) {
   __global const GdrMaterial* m = &s->materials[su->material];
-#if !defined(GDR_LIGHTS_SELECTED) || defined(GDR_TEXTURES)
+#if !defined(GDR_TEXTURES_SELECTED) || defined(GDR_TEXTURES)
   if (m->reflectance_texture >= 0) return texture_eval(s, m->reflectance_texture, su->uv);
 #endif
   return vload3(0, m->reflectance);

@@ -79,22 +79,24 @@ typedef struct GdrGptParams {
 // Shadow-ray ids: group * 8 + kind, kind 0 = the base's ray, 1 + k = offset k's own ray.
 #define GPT_SHADOW_ID(group, kind) ((group) * 8u + (uint)(kind))
 
-// Counters (atomic_inc), read after each step.
-#define GPT_COUNTER_BASE_RAYS 0
-#define GPT_COUNTER_OFFSET_RAYS 1
-#define GPT_COUNTER_SHADOW_RAYS 2
-#define GPT_COUNTER_RECONNECT_RAYS 3
-#define GPT_COUNTER_NONFINITE 4
-#define GPT_COUNTER_SHIFT_RECONNECT 5      // successful shifts, by kind
-#define GPT_COUNTER_SHIFT_HALF_VECTOR 6
-#define GPT_COUNTER_SHIFT_DELTA 7
-#define GPT_COUNTER_SHIFT_DIRECTION 8      // direction copy toward the environment
-#define GPT_COUNTER_SHIFT_REPLAY 9
-#define GPT_COUNTER_FAIL_OUTSIDE 10        // offset pixel outside the image
-#define GPT_COUNTER_FAIL_LOBE 11           // delta vs non-delta lobe mismatch, or lobe missing
-#define GPT_COUNTER_FAIL_REFRACTION 12     // total internal reflection in one path only
-#define GPT_COUNTER_FAIL_OCCLUDED 13       // reconnection segment blocked
-#define GPT_COUNTER_FAIL_ENVIRONMENT 14    // one path escaped, the other hit geometry
-#define GPT_COUNTER_FAIL_ZERO 15           // zero pdf or value, or inconsistent sides
-#define GPT_COUNTER_FAIL_NONFINITE 16      // the offset's throughput or pdf ratio overflowed
-#define GPT_COUNTER_COUNT 17
+// Counters (atomic_inc), read after each step: queue sizes, then shifts by kind and failures by
+// reason.
+#define GPT_COUNTERS(X)                                                                              \
+  X(GPT_COUNTER_BASE_RAYS, "")                                                                       \
+  X(GPT_COUNTER_OFFSET_RAYS, "")                                                                     \
+  X(GPT_COUNTER_SHADOW_RAYS, "")                                                                     \
+  X(GPT_COUNTER_RECONNECT_RAYS, "")                                                                  \
+  X(GPT_COUNTER_NONFINITE, "samples/nonfinite_rejected")                                             \
+  X(GPT_COUNTER_SHIFT_RECONNECT, "shifts/reconnection")                                              \
+  X(GPT_COUNTER_SHIFT_HALF_VECTOR, "shifts/half_vector")                                             \
+  X(GPT_COUNTER_SHIFT_DELTA, "shifts/delta_lobe")                                                    \
+  X(GPT_COUNTER_SHIFT_DIRECTION, "shifts/direction_copy")   /* toward the environment */             \
+  X(GPT_COUNTER_SHIFT_REPLAY, "shifts/replay")                                                       \
+  X(GPT_COUNTER_FAIL_OUTSIDE, "shift_failures/outside_image")                                        \
+  X(GPT_COUNTER_FAIL_LOBE, "shift_failures/lobe_mismatch")  /* delta vs non-delta, or lobe missing */ \
+  X(GPT_COUNTER_FAIL_REFRACTION, "shift_failures/refraction") /* total internal reflection in one */ \
+  X(GPT_COUNTER_FAIL_OCCLUDED, "shift_failures/occluded")   /* reconnection segment blocked */       \
+  X(GPT_COUNTER_FAIL_ENVIRONMENT, "shift_failures/environment_mismatch") /* one escaped */           \
+  X(GPT_COUNTER_FAIL_ZERO, "shift_failures/zero_pdf_or_value") /* or inconsistent sides */           \
+  X(GPT_COUNTER_FAIL_NONFINITE, "shift_failures/nonfinite") /* throughput or pdf ratio overflowed */
+enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };

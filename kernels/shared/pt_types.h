@@ -1,5 +1,6 @@
 // State of the wavefront path tracer, shared by its kernels and the host loop.
 #pragma once
+#include "shared/counters.h"
 
 #define PATH_FLAG_SPECULAR 1  // the last bounce sampled a delta lobe (no MIS for emission hit)
 
@@ -31,8 +32,9 @@ typedef struct GdrPtParams {
 #define PT_STRATEGY_BSDF 1   // BSDF sampling only
 #define PT_STRATEGY_LIGHT 2  // light sampling only (emission seen through delta bounces kept)
 
-// Counters the kernels increment (atomic_inc), read after each pass.
-#define PT_COUNTER_NEXT_RAYS 0    // rays written for the next bounce
-#define PT_COUNTER_SHADOW_RAYS 1  // shadow rays written
-#define PT_COUNTER_NONFINITE 2    // contributions rejected because they were NaN or Inf
-#define PT_COUNTER_COUNT 4
+// Counters the kernels increment (atomic_inc), read after each step.
+#define PT_COUNTERS(X)                                                                    \
+  X(PT_COUNTER_NEXT_RAYS, "")                       /* rays written for the next bounce */ \
+  X(PT_COUNTER_SHADOW_RAYS, "")                     /* shadow rays written */              \
+  X(PT_COUNTER_NONFINITE, "samples/nonfinite_rejected") /* NaN or Inf contributions dropped */
+enum { PT_COUNTERS(GDR_COUNTER_ENUM) PT_COUNTER_COUNT };

@@ -10,6 +10,7 @@
 
 #include "accel/embree_scene.h"
 #include "integrators/pt/path_tracer.h"
+#include "render/device_scene.h"
 #include "scene/load_scene.h"
 #include "support/devices.h"
 
@@ -21,6 +22,7 @@ namespace {
 struct PtBench {
   Scene scene;
   std::unique_ptr<EmbreeScene> embree;
+  std::unique_ptr<DeviceScene> device_scene;
   std::unique_ptr<PathTracer> tracer;
   uint32_t pixels;
   GdrPtParams params{};
@@ -36,7 +38,8 @@ struct PtBench {
   explicit PtBench(Context& ctx)
       : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
-        tracer(std::make_unique<PathTracer>(ctx, scene, *embree)),
+        device_scene(std::make_unique<DeviceScene>(ctx, scene)),
+        tracer(std::make_unique<PathTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, PtSettings{})),
         pixels(uint32_t(scene.camera.width) * scene.camera.height) {
     RenderSettings settings;
     settings.seed = 1;
@@ -50,7 +53,7 @@ struct PtBench {
       queue_paths[depth] = tracer->paths().read();
       tracer->intersect(depth, active[depth], depth == 0);
       queue_hits[depth] = snapshot(tracer->rays(depth), active[depth]);
-      std::vector<cl_uint> c = tracer->shade(params, depth, active[depth]);
+      const std::vector<cl_uint>& c = tracer->shade(params, depth, active[depth]);
       if (depth == 0) {
         shadows = c[PT_COUNTER_SHADOW_RAYS];
         shadow_queue = snapshot(tracer->shadow_rays(), shadows);

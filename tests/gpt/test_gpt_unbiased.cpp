@@ -58,19 +58,18 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift) {
   const int h = std::max(kBlock, (kWidth * scene.camera.height / scene.camera.width) / kBlock * kBlock);
   scene.camera.width = w;
   scene.camera.height = h;
-  EmbreeScene embree(scene, BuildQuality::Low);
-  Context& ctx = test::default_context();
-  PathTracer pt(ctx, scene, embree);
+  test::SceneOnDevice on_device(scene);
+  PathTracer pt(on_device.inputs(), PtSettings{});
   GptSettings gs;
   gs.shift = shift;
-  GradientPathTracer gpt(ctx, scene, embree, gs);
+  GradientPathTracer gpt(on_device.inputs(), gs);
   std::vector<Stat> a, b;
   for (int k = 0; k < kRuns; ++k) {
     RenderSettings s;
     s.spp = kSpp;
     s.seed = 1 + k;
     s.max_depth = kMaxDepth;
-    GradientImages g = gpt.render(s);
+    GradientImages g = gpt.render_gradients(s);
     std::vector<float> ddx, ddy;
     differences(w, h, g.direct, ddx, ddy);
     for (size_t i = 0; i < g.dx.size(); ++i) {

@@ -15,14 +15,17 @@ namespace {
 constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4;
 
 // runs[k][block]: the block's mean luminance in run k.
-std::vector<std::vector<double>> block_means(PathTracer& tracer, int width, int height, int strategy, int spp) {
+std::vector<std::vector<double>> block_means(test::SceneOnDevice& scene, int width, int height, int strategy,
+                                             int spp) {
+  PtSettings pt;
+  pt.strategy = strategy;
+  PathTracer tracer(scene.inputs(), pt);
   std::vector<std::vector<double>> runs;
   for (int k = 0; k < kRuns; ++k) {
     RenderSettings s;
     s.spp = spp;
     s.seed = 1 + k;
     s.max_depth = 6;
-    s.strategy = strategy;
     std::vector<float> rgb = tracer.render(s).image.rgb_layer("");
     std::vector<double> blocks((width / kBlock) * (height / kBlock), 0.0);
     for (int y = 0; y < height; ++y) {
@@ -43,11 +46,10 @@ void expect_same_expectation(Scene scene, const std::string& scene_file, bool ch
   const int height = std::max(kBlock, (film_width * scene.camera.height / scene.camera.width) / kBlock * kBlock);
   scene.camera.width = width;
   scene.camera.height = height;
-  EmbreeScene embree(scene, BuildQuality::Low);
-  PathTracer tracer(test::default_context(), scene, embree);
-  auto mis = block_means(tracer, width, height, PT_STRATEGY_MIS, spp);
-  auto bsdf = check_bsdf ? block_means(tracer, width, height, PT_STRATEGY_BSDF, spp) : mis;
-  auto light = block_means(tracer, width, height, PT_STRATEGY_LIGHT, spp);
+  test::SceneOnDevice on_device(scene);
+  auto mis = block_means(on_device, width, height, PT_STRATEGY_MIS, spp);
+  auto bsdf = check_bsdf ? block_means(on_device, width, height, PT_STRATEGY_BSDF, spp) : mis;
+  auto light = block_means(on_device, width, height, PT_STRATEGY_LIGHT, spp);
   const int blocks = static_cast<int>(mis[0].size());
   const double alpha = test::sidak(1e-3, (check_bsdf ? 2 : 1) * blocks);
   for (int b = 0; b < blocks; ++b) {

@@ -1,169 +1,142 @@
 #include "integrators/gpt/gradient_path_tracer.h"
 
-#include <algorithm>
-#include <cmath>
-
-#include "integrators/film.h"
-#include "integrators/progressive_loop.h"
+#include "render/progressive_loop.h"
+#include "render/wavefront/chunks.h"
 
 namespace gdr {
 namespace {
 
 // Groups in flight per chunk: a group holds five paths (about 1.5 KiB of queues and state).
 constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
-
-const char* kShiftCounterNames[GPT_COUNTER_COUNT] = {
-    nullptr, nullptr, nullptr, nullptr, "samples/nonfinite_rejected",
-    "shifts/reconnection", "shifts/half_vector", "shifts/delta_lobe", "shifts/direction_copy", "shifts/replay",
-    "shift_failures/outside_image", "shift_failures/lobe_mismatch", "shift_failures/refraction",
-    "shift_failures/occluded", "shift_failures/environment_mismatch", "shift_failures/zero_pdf_or_value",
-    "shift_failures/nonfinite"};
-
-Kernel gpt_kernel(Context& ctx, const Scene& scene, const char* name) {
-  return ctx.program("gpt/gpt.cl", scene_kernel_defines(scene))->kernel(name);
-}
+constexpr const char* kProgram = "gpt/gpt.cl";
 
 }  // namespace
 
-GradientPathTracer::GradientPathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree, const GptSettings& gpt)
-    : ctx_(ctx),
-      scene_(scene),
-      embree_(embree),
+const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux"};
+
+GptSettings gpt_settings(const IntegratorParams& params) {
+  GptSettings s;
+  s.shift = params.choice("shift", "hybrid", {"hybrid", "replay"}) == "replay" ? GPT_SHIFT_REPLAY : GPT_SHIFT_HYBRID;
+  s.shift_threshold = params.non_negative("shift_threshold", s.shift_threshold);
+  s.aux = params.flag("aux", false);
+  return s;
+}
+
+GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
+    : in_(in),
       gpt_(gpt),
-      device_scene_(ctx, scene),
-      generate_(gpt_kernel(ctx, scene, "gpt_generate")),
-      scatter_(gpt_kernel(ctx, scene, "gpt_scatter")),
-      shade_(gpt_kernel(ctx, scene, "gpt_shade")),
-      shadow_(gpt_kernel(ctx, scene, "gpt_shadow")),
-      shift_(gpt_kernel(ctx, scene, "gpt_shift")),
-      gather_(gpt_kernel(ctx, scene, "gpt_gather")),
-      capacity_(std::min(kMaxGroupsInFlight, size_t(scene.camera.width) * scene.camera.height)),
-      base_rays_{Buffer<GdrRayHit>(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
-                 Buffer<GdrRayHit>(ctx, capacity_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR)},
-      offset_rays_(ctx, capacity_ * GPT_OFFSETS, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
-      reconnect_rays_(ctx, capacity_ * GPT_OFFSETS, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
-      shadow_rays_(ctx, capacity_ * (GPT_OFFSETS + 1), CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR),
-      bases_(ctx, capacity_),
-      offsets_(ctx, capacity_ * GPT_OFFSETS),
-      acc_(ctx, size_t(scene.camera.width) * scene.camera.height * GPT_ACC_COUNT),
-      pend_(ctx, capacity_ * GPT_PEND_COUNT),
-      counters_(ctx, GPT_COUNTER_COUNT),
-      primal_(ctx, size_t(scene.camera.width) * scene.camera.height),
-      dx_(ctx, primal_.size()),
-      dy_(ctx, primal_.size()),
-      direct_(ctx, primal_.size()),
-      primal_sq_(ctx, primal_.size()) {}
+      params_(params),
+      kernels_(in.context, in.scene),
+      generate_(kernels_.make(kProgram, "gpt_generate")),
+      scatter_(kernels_.make(kProgram, "gpt_scatter")),
+      shade_(kernels_.make(kProgram, "gpt_shade")),
+      shadow_(kernels_.make(kProgram, "gpt_shadow")),
+      shift_(kernels_.make(kProgram, "gpt_shift")),
+      gather_(kernels_.make(kProgram, "gpt_gather")),
+      capacity_(chunk_capacity(kMaxGroupsInFlight, in.scene.camera.width, in.scene.camera.height)),
+      base_queues_(in.context, capacity_, false),
+      offset_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
+      reconnect_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
+      shadow_rays_(in.context, capacity_ * (GPT_OFFSETS + 1), kRayQueueFlags),
+      bases_(in.context, capacity_),
+      offsets_(in.context, capacity_ * GPT_OFFSETS),
+      acc_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height * GPT_ACC_COUNT),
+      pend_(in.context, capacity_ * GPT_PEND_COUNT),
+      counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)),
+      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"primal", "dx", "dy", "direct", "primal_sq"}) {
+  if (gpt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
+}
 
 GdrGptParams GradientPathTracer::params(const RenderSettings& settings, uint32_t sample, uint32_t first,
                                         uint32_t count) const {
   GdrGptParams p{};
-  p.path = device_scene_.path_params(settings, sample, first, count);
-  p.path.strategy = PT_STRATEGY_MIS;
+  p.path = in_.device_scene.path_params(settings, sample, first, count);
   p.shift = gpt_.shift;
   p.shift_threshold = gpt_.shift_threshold;
   return p;
 }
 
-void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
-  Stats* stats = ctx_.stats();
-  GdrGptParams p = params(settings, sample, first, count);
-  std::vector<uint64_t> totals(GPT_COUNTER_COUNT, 0);
-  auto read_counters = [&] {
-    std::vector<cl_uint> c = counters_.read();
-    for (int i = 0; i < GPT_COUNTER_COUNT; ++i) totals[i] += c[i];
-    return c;
-  };
-  auto intersect_offsets = [&](cl_uint rays, cl_uint reconnects) {
-    if (rays > 0) {
-      auto m = offset_rays_.map(rays);
-      embree_.intersect(m.data(), rays, false, "offset");
-    }
-    if (reconnects > 0) {
-      auto m = reconnect_rays_.map(reconnects);
-      embree_.occluded(m.data(), reconnects, "reconnection");
-    }
-    scatter_.args(rays, offset_rays_, reconnects, reconnect_rays_, offsets_).run(rays + reconnects);
-  };
+void GradientPathTracer::intersect_offsets(cl_uint rays, cl_uint reconnects) {
+  intersect(in_.embree, offset_rays_, rays, false, "offset");
+  occlude(in_.embree, reconnect_rays_, reconnects, "reconnection");
+  scatter_.args(rays, offset_rays_, reconnects, reconnect_rays_, offsets_).run(rays + reconnects);
+}
 
-  counters_.fill(0u);
-  generate_.args(device_scene_.camera(), p, base_rays_[0], offset_rays_, bases_, offsets_, acc_, counters_).run(count);
-  std::vector<cl_uint> c = read_counters();
-  {
-    auto m = base_rays_[0].map(count);
-    embree_.intersect(m.data(), count, true, "camera");
-  }
-  intersect_offsets(c[GPT_COUNTER_OFFSET_RAYS], 0);
+void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
+  GdrGptParams p = params(settings, sample, first, count);
+  Buffer<GdrRayHit>* base_rays = base_queues_.rays;
+
+  counters_.reset();
+  generate_.args(in_.device_scene.camera(), p, base_rays[0], offset_rays_, bases_, offsets_, acc_, counters_.buffer())
+      .run(count);
+  counters_.read();
+  intersect(in_.embree, base_rays[0], count, true, "camera");
+  if (aux_) aux_->add(p.path, base_rays[0], count, in_.device_scene);
+  intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], 0);
 
   cl_uint active = count;
   for (int cur = 0; active > 0; cur = 1 - cur) {
-    counters_.fill(0u);
-    shade_.args(p, active, base_rays_[cur], base_rays_[1 - cur], shadow_rays_, bases_, offsets_, acc_, pend_,
-                counters_);
-    device_scene_.set_args(shade_, 10);
-    shade_.run(active);
-    c = read_counters();
-    cl_uint next = c[GPT_COUNTER_BASE_RAYS], shadows = c[GPT_COUNTER_SHADOW_RAYS];
-    if (next > 0) {
-      auto m = base_rays_[1 - cur].map(next);
-      embree_.intersect(m.data(), next, false, "bounce");
-    }
+    counters_.reset();
+    shade_
+        .args(p, active, base_rays[cur], base_rays[1 - cur], shadow_rays_, bases_, offsets_, acc_, pend_,
+              counters_.buffer(), in_.device_scene)
+        .run(active);
+    counters_.read();
+    cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], shadows = counters_[GPT_COUNTER_SHADOW_RAYS];
+    intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
     if (shadows > 0) {
-      {
-        auto m = shadow_rays_.map(shadows);
-        embree_.occluded(m.data(), shadows, "shadow");
-      }
+      occlude(in_.embree, shadow_rays_, shadows, "shadow");
       shadow_.args(shadows, shadow_rays_, pend_, bases_, acc_).run(shadows);
     }
     if (next > 0) {
-      counters_.fill(0u);
-      shift_.args(p, next, base_rays_[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_, counters_);
-      device_scene_.set_args(shift_, 8);
-      shift_.run(next);
-      c = read_counters();
-      intersect_offsets(c[GPT_COUNTER_OFFSET_RAYS], c[GPT_COUNTER_RECONNECT_RAYS]);
+      counters_.reset();
+      shift_
+          .args(p, next, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_, counters_.buffer(),
+                in_.device_scene)
+          .run(next);
+      counters_.read();
+      intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], counters_[GPT_COUNTER_RECONNECT_RAYS]);
     }
     active = next;
   }
-  if (stats) {
-    for (int i = 0; i < GPT_COUNTER_COUNT; ++i) {
-      if (kShiftCounterNames[i] && totals[i]) stats->add_count(kShiftCounterNames[i], totals[i]);
-    }
-  }
+  counters_.report(in_.context.stats());
 }
 
-GradientImages GradientPathTracer::render(const RenderSettings& settings) {
-  Stats* stats = ctx_.stats();
+GradientImages GradientPathTracer::render_gradients(const RenderSettings& settings) {
+  Stats* stats = in_.context.stats();
   ScopedTimer timer(stats, "render/trace");
-  const int w = scene_.camera.width, h = scene_.camera.height;
-  const uint32_t pixels = uint32_t(w) * h;
-  for (Buffer<Vec4>* b : {&primal_, &dx_, &dy_, &direct_, &primal_sq_}) b->fill(Vec4{});
+  const int w = film_.width(), h = film_.height();
+  const uint32_t pixels = uint32_t(film_.pixels());
+  film_.clear();
+  if (aux_) aux_->clear();
   GradientImages out;
   out.width = w;
   out.height = h;
   out.samples = run_progressive(settings, [&](int sample) {
-    for (uint32_t first = 0; first < pixels; first += uint32_t(capacity_)) {
-      trace_chunk(settings, uint32_t(sample), first, std::min<uint32_t>(uint32_t(capacity_), pixels - first));
-    }
-    gather_.args(w, h, acc_, primal_, dx_, dy_, direct_, primal_sq_).run(pixels);
+    for_each_chunk(pixels, capacity_, [&](uint32_t first, uint32_t count) {
+      trace_chunk(settings, uint32_t(sample), first, count);
+    });
+    gather_.args(w, h, acc_, film_["primal"], film_["dx"], film_["dy"], film_["direct"], film_["primal_sq"])
+        .run(pixels);
   });
   out.seconds = timer.elapsed();
-  float scale = out.samples > 0 ? 1.0f / out.samples : 0.0f;
-  out.primal = film_rgb(primal_, scale);
-  out.dx = film_rgb(dx_, scale);
-  out.dy = film_rgb(dy_, scale);
-  out.direct = film_rgb(direct_, scale);
-  std::vector<float> sq = film_rgb(primal_sq_, scale);
-  out.variance.resize(sq.size());
-  for (size_t i = 0; i < sq.size(); ++i) {
-    // Variance of the mean over the passes (one sample each).
-    double var = std::max(0.0, double(sq[i]) - double(out.primal[i]) * out.primal[i]);
-    out.variance[i] = out.samples > 1 ? float(var / (out.samples - 1)) : 0.0f;
-  }
+  out.primal = film_.mean_rgb("primal", out.samples);
+  out.dx = film_.mean_rgb("dx", out.samples);
+  out.dy = film_.mean_rgb("dy", out.samples);
+  out.direct = film_.mean_rgb("direct", out.samples);
+  out.variance = variance_of_mean(out.primal, film_.mean_rgb("primal_sq", out.samples), out.samples);
   if (stats) {
     stats->add_count("samples/paths", uint64_t(pixels) * out.samples * (1 + GPT_OFFSETS));
     stats->set("render/spp", out.samples);
   }
   return out;
+}
+
+RenderResult GradientPathTracer::render(const RenderSettings& settings) {
+  GradientImages layers = render_gradients(settings);
+  RenderResult result = gradient_result(in_.context, layers, params_, in_.context.stats());
+  if (aux_) aux_->add_to(result.image, result.samples);
+  return result;
 }
 
 }  // namespace gdr

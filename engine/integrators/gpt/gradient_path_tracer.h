@@ -1,50 +1,57 @@
 // Gradient-domain path tracing (`gpt`, Kettunen et al. 2015): per pixel sample a base path and
 // four offset paths through the neighbouring pixels, traced in one wavefront; the shifts, their
-// Jacobians and the MIS weights run in kernels/gpt/. Produces the primal image, the forward-
-// difference gradients dx and dy, and the directly seen emission (kept out of the gradients).
+// Jacobians and the MIS weights run in kernels (kernels/gpt over kernels/shift, kernels/gradient
+// and kernels/path). Produces the primal image, the forward-difference gradients dx and dy, and
+// the directly seen emission (kept out of the gradients), then reconstructs the image.
+//
+// Parameters (IntegratorParams):
+//   shift            hybrid (default: reconnection where rough, half-vector copy elsewhere) | replay
+//   shift_threshold  roughness at or below which a vertex is glossy, not reconnected (0.001)
+//   aux              true: also write the first hits' albedo, normal and depth layers
+//   recon, recon_solver, alpha: the reconstruction (render/gradient_images.h)
 #pragma once
-#include "accel/embree_scene.h"
-#include "device/context.h"
-#include "integrators/device_scene.h"
-#include "integrators/render_settings.h"
-#include "scene/scene.h"
+#include <optional>
+
+#include "render/aux_layers.h"
+#include "render/film.h"
+#include "render/gradient_images.h"
+#include "render/integrator.h"
+#include "render/wavefront/device_counters.h"
+#include "render/wavefront/kernel_factory.h"
+#include "render/wavefront/ray_queues.h"
 #include "shared/gpt_types.h"
-#include "shared/ray_types.h"
 
 namespace gdr {
 
 struct GptSettings {
   int shift = GPT_SHIFT_HYBRID;  // GPT_SHIFT_*
-  float shift_threshold = 0.001f;
+  float shift_threshold = GDR_GLOSSY_THRESHOLD;
+  bool aux = false;
 };
+extern const std::vector<std::string> kGptParams;
+GptSettings gpt_settings(const IntegratorParams& params);
 
-// The layers of a gradient-domain render, each interleaved RGB, means over the samples taken.
-struct GradientImages {
-  int width = 0, height = 0;
-  int samples = 0;
-  double seconds = 0;
-  std::vector<float> primal, dx, dy, direct;
-  std::vector<float> variance;  // per-pixel variance of the primal's mean
-};
-
-class GradientPathTracer {
+class GradientPathTracer : public Integrator {
  public:
-  GradientPathTracer(Context& context, const Scene& scene, EmbreeScene& embree, const GptSettings& gpt);
+  GradientPathTracer(const RenderInputs& inputs, const GptSettings& gpt, const IntegratorParams& params = {});
 
-  GradientImages render(const RenderSettings& settings);
+  // The gradient layers alone, not reconstructed.
+  GradientImages render_gradients(const RenderSettings& settings);
+  RenderResult render(const RenderSettings& settings) override;
 
  private:
   void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
   GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
+  // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
+  void intersect_offsets(cl_uint rays, cl_uint reconnects);
 
-  Context& ctx_;
-  const Scene& scene_;
-  EmbreeScene& embree_;
+  RenderInputs in_;
   GptSettings gpt_;
-  DeviceScene device_scene_;
+  IntegratorParams params_;  // the reconstruction's
+  KernelFactory kernels_;
   Kernel generate_, scatter_, shade_, shadow_, shift_, gather_;
   size_t capacity_;  // groups in flight at once
-  Buffer<GdrRayHit> base_rays_[2];
+  RayQueues base_queues_;
   Buffer<GdrRayHit> offset_rays_;
   Buffer<GdrRay> reconnect_rays_;
   Buffer<GdrRay> shadow_rays_;
@@ -52,8 +59,9 @@ class GradientPathTracer {
   Buffer<GptOffsetState> offsets_;
   Buffer<Vec4> acc_;   // GPT_ACC_COUNT per pixel of the whole image (gather reads neighbours)
   Buffer<Vec4> pend_;  // GPT_PEND_COUNT per group
-  Buffer<cl_uint> counters_;
-  Buffer<Vec4> primal_, dx_, dy_, direct_, primal_sq_;
+  DeviceCounters counters_;
+  Film film_;  // primal, dx, dy, direct, primal_sq
+  std::optional<AuxLayers> aux_;
 };
 
 }  // namespace gdr

@@ -9,8 +9,7 @@
 namespace gdr {
 
 // Appends the tables of every LIGHT_ENVMAP light of `lights` to `tables` and sets the light's
-// distribution_offset. Layout per map: the rows' cdf (height + 1 floats), then per row the cdf
-// over its columns (width + 1 floats).
+// distribution_offset. Layout per map: kernels/shared/environment_table.h.
 void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights, std::vector<float>& tables);
 
 }  // namespace gdr

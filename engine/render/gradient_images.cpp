@@ -1,10 +1,29 @@
-#include "integrators/gpt/gradient_image.h"
+#include "render/gradient_images.h"
 
 #include "recon/reconstruct.h"
 #include "util/error.h"
 #include "util/log.h"
 
 namespace gdr {
+
+const std::vector<std::string> kReconParams = {"recon", "recon_solver", "alpha"};
+
+std::optional<ReconSettings> recon_from_params(const IntegratorParams& p) {
+  std::string norm = p.choice("recon", "l1", {"l1", "l2", "none"});
+  if (norm == "none") return std::nullopt;
+  ReconSettings defaults;
+  return recon_settings(norm, p.non_negative("alpha", defaults.alpha), p.choice("recon_solver", "fast", {"fast", "cg"}));
+}
+
+RenderResult gradient_result(Context& ctx, const GradientImages& layers, const IntegratorParams& params,
+                             Stats* stats) {
+  ScopedTimer t(stats, "recon/total");
+  RenderResult result;
+  result.image = gradient_image(ctx, layers, recon_from_params(params), stats);
+  result.samples = layers.samples;
+  result.seconds = layers.seconds + t.elapsed();
+  return result;
+}
 
 Image gradient_image(Context& ctx, const GradientImages& g,
                      const std::optional<ReconSettings>& recon, Stats* stats) {

@@ -1,4 +1,5 @@
-// What every integrator is asked to do, and what it returns.
+// What every integrator is asked to do, and what it returns. Settings of one integrator only
+// (strategies, shifts, reconstruction) are its own: IntegratorParams.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -13,9 +14,7 @@ struct RenderSettings {
   uint32_t seed = 0;
   int max_depth = 16;                  // Mitsuba's convention: path segments; <= 0 unbounded
   int rr_depth = 5;                    // bounces before Russian roulette
-  int strategy = 0;                    // PT_STRATEGY_* (kernels/shared/pt_types.h)
   bool progress = false;               // progress line on stderr
-  bool aux = false;                    // also output albedo, normal and depth layers (pt)
 };
 
 struct RenderResult {

@@ -1,4 +1,4 @@
-#include "integrators/progressive_loop.h"
+#include "render/progressive_loop.h"
 
 #include <unistd.h>
 

@@ -1,21 +1,22 @@
-#include "integrators/environment_distribution.h"
+#include "render/environment_distribution.h"
 
 #include <cmath>
 
 #include "shared/color.h"
+#include "shared/environment_table.h"
 
 namespace gdr {
 namespace {
 
-// Normalised cdf of `weights` (uniform when they sum to zero).
-void append_cdf(const std::vector<double>& weights, std::vector<float>& out) {
+// Normalised cdf of `weights` (uniform when they sum to zero) into out[0 .. weights.size()].
+void write_cdf(const std::vector<double>& weights, float* out) {
   double total = 0;
   for (double w : weights) total += w;
   double acc = 0;
-  out.push_back(0.0f);
+  out[0] = 0.0f;
   for (size_t i = 0; i < weights.size(); ++i) {
     acc += total > 0 ? weights[i] / total : 1.0 / weights.size();
-    out.push_back(i + 1 == weights.size() ? 1.0f : static_cast<float>(acc));
+    out[i + 1] = i + 1 == weights.size() ? 1.0f : static_cast<float>(acc);
   }
 }
 
@@ -27,10 +28,10 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
     if (l.type != LIGHT_ENVMAP || l.texture < 0) continue;
     const GdrTexture& t = scene.textures[l.texture];
     const int w = t.width, h = t.height;
-    l.distribution_offset = static_cast<int>(tables.size());
+    const size_t offset = tables.size();
+    l.distribution_offset = static_cast<int>(offset);
+    tables.resize(offset + env_table_size(w, h));
     std::vector<double> row_weight(h);
-    std::vector<float> columns;
-    columns.reserve(size_t(h) * (w + 1));
     for (int r = 0; r < h; ++r) {
       double sin_theta = std::sin(pi * (r + 0.5) / h);
       std::vector<double> weight(w);
@@ -40,10 +41,9 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
         weight[c] = std::isfinite(lum) && lum > 0 ? lum * sin_theta : 0.0;
         row_weight[r] += weight[c];
       }
-      append_cdf(weight, columns);
+      write_cdf(weight, &tables[offset + env_table_columns_offset(w, h, r)]);
     }
-    append_cdf(row_weight, tables);
-    tables.insert(tables.end(), columns.begin(), columns.end());
+    write_cdf(row_weight, &tables[offset]);
   }
 }
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <functional>
 
-#include "integrators/render_settings.h"
+#include "render/render_settings.h"
 
 namespace gdr {
 

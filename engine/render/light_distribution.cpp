@@ -1,4 +1,4 @@
-#include "integrators/light_distribution.h"
+#include "render/light_distribution.h"
 
 #include <cmath>
 

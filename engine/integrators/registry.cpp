@@ -1,0 +1,90 @@
+#include "integrators/registry.h"
+
+#include <sstream>
+
+#include "integrators/gpt/gradient_path_tracer.h"
+#include "integrators/pt/path_tracer.h"
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+template <class T>
+std::vector<T> join(std::vector<T> a, const std::vector<T>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+std::vector<IntegratorEntry> make_registry() {
+  return {
+      {"pt", "wavefront path tracer: next-event estimation and BSDF sampling by MIS, Russian roulette", false,
+       kPtParams, {"path", "pt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<PathTracer>(in, pt_settings(p));
+       }},
+      {"gpt", "gradient-domain path tracing (Kettunen et al. 2015): hybrid or replay shifts, Poisson reconstruction",
+       true, join(kGptParams, kReconParams), {"gpt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<GradientPathTracer>(in, gpt_settings(p), p);
+       }},
+  };
+}
+
+}  // namespace
+
+const std::vector<IntegratorEntry>& integrator_registry() {
+  static const std::vector<IntegratorEntry> registry = make_registry();
+  return registry;
+}
+
+const IntegratorEntry* integrator_for_name(const std::string& name) {
+  for (const IntegratorEntry& e : integrator_registry()) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+const IntegratorEntry& find_integrator(const std::string& name) {
+  if (const IntegratorEntry* e = integrator_for_name(name)) return *e;
+  throw Error("unknown integrator '" + name + "' (available: " + integrator_names() + ")");
+}
+
+const IntegratorEntry* integrator_for_scene_type(const std::string& type) {
+  for (const IntegratorEntry& e : integrator_registry()) {
+    for (const std::string& t : e.scene_types) {
+      if (t == type) return &e;
+    }
+  }
+  return nullptr;
+}
+
+std::string integrator_names() {
+  std::string names;
+  for (const IntegratorEntry& e : integrator_registry()) names += (names.empty() ? "" : ", ") + e.name;
+  return names;
+}
+
+std::string integrators_reading(const std::string& param) {
+  std::string names;
+  for (const IntegratorEntry& e : integrator_registry()) {
+    for (const std::string& p : e.params) {
+      if (p == param) names += (names.empty() ? "" : ", ") + e.name;
+    }
+  }
+  return names;
+}
+
+std::string describe_integrators() {
+  std::ostringstream out;
+  for (const IntegratorEntry& e : integrator_registry()) {
+    out << "  " << e.name << (e.gradient ? " (gradient)" : "") << ": " << e.description << "\n";
+    if (!e.params.empty()) {
+      out << "      parameters:";
+      for (const std::string& p : e.params) out << " " << p;
+      out << "\n";
+    }
+  }
+  return out.str();
+}
+
+}  // namespace gdr

@@ -1,0 +1,48 @@
+// A render's per-pixel sums on the device, as named layers (float4 per pixel, w unused):
+// cleared at the start of a render, summed by the kernels pass after pass, and turned into
+// interleaved-RGB means at the end. The film knows its layers, so code that sums or saves them
+// (all layers of any integrator) needs no integrator of its own.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "device/context.h"
+#include "scene/scene.h"
+
+namespace gdr {
+
+class Film {
+ public:
+  Film(Context& context, int width, int height, const std::vector<std::string>& layers);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  size_t pixels() const { return size_t(width_) * height_; }
+
+  // The layer's sums (the kernels' argument); throws Error for a layer the film lacks.
+  Buffer<Vec4>& operator[](const std::string& layer);
+  const Buffer<Vec4>& operator[](const std::string& layer) const;
+  std::vector<std::string> layers() const;
+
+  void clear();
+  // The layer's mean over `samples` passes, interleaved RGB.
+  std::vector<float> mean_rgb(const std::string& layer, int samples) const;
+
+ private:
+  int width_, height_;
+  std::map<std::string, Buffer<Vec4>> layers_;
+};
+
+// 1 / samples, the factor that turns sums into means (0 before any sample).
+inline float mean_scale(int samples) { return samples > 0 ? 1.0f / samples : 0.0f; }
+
+// The buffer's RGB times `scale`, interleaved.
+std::vector<float> film_rgb(const Buffer<Vec4>& sums, float scale);
+
+// Per-pixel variance of the mean of `samples` passes (one sample each), from the passes' mean and
+// mean square (interleaved RGB).
+std::vector<float> variance_of_mean(const std::vector<float>& mean, const std::vector<float>& mean_square,
+                                    int samples);
+
+}  // namespace gdr

@@ -1,0 +1,84 @@
+// The scene-buffer list (kernels/shared/scene_buffers.h) binds as the kernels declare it: a
+// kernel reading each buffer through SCENE_DATA_ARGS, with DeviceScene passed among its other
+// arguments, sees every word of the host's arrays, buffer by buffer. A scene with an
+// environment map, spheres (normals, uvs) and two materials, so that no buffer is empty.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "render/device_scene.h"
+#include "shared/environment_table.h"
+#include "support/devices.h"
+#include "support/envmap_scene.h"
+
+namespace gdr {
+namespace {
+
+struct Words {
+  std::vector<std::string> names;
+  std::vector<cl_uint> offsets{0};
+  std::vector<cl_uint> words;
+};
+
+// The host arrays' words, in list order.
+Words host_words(const SceneArrays& a) {
+  Words w;
+#define GDR_HOST_WORDS(ktype, htype, name, what)                                  \
+  {                                                                               \
+    size_t n = a.name.size() * sizeof(htype) / 4;                                 \
+    size_t at = w.words.size();                                                   \
+    w.words.resize(at + n);                                                       \
+    if (n) std::memcpy(&w.words[at], a.name.data(), n * 4);                       \
+    w.names.push_back(#name);                                                     \
+    w.offsets.push_back(cl_uint(w.words.size()));                                 \
+  }
+  GDR_SCENE_BUFFERS(GDR_HOST_WORDS, GDR_HOST_WORDS)
+#undef GDR_HOST_WORDS
+  return w;
+}
+
+TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
+  Scene scene = test::envmap_scene();
+  Context& ctx = test::default_context();
+  SceneArrays arrays = scene_arrays(scene);
+  Words host = host_words(arrays);
+  for (size_t b = 0; b < host.names.size(); ++b) {
+    ASSERT_GT(host.offsets[b + 1], host.offsets[b]) << "the test scene has no " << host.names[b];
+  }
+  DeviceScene device(ctx, scene);
+  Buffer<cl_uint> offsets(ctx, host.offsets);
+  Buffer<cl_uint> out(ctx, host.words.size());
+  out.fill(0xDEADBEEFu);
+  ctx.program("tests/scene_buffers_test.cl")
+      ->kernel("scene_buffers_copy")
+      .args(device, offsets, out)
+      .run(host.words.size());
+  std::vector<cl_uint> seen = out.read();
+  for (size_t b = 0; b < host.names.size(); ++b) {
+    size_t wrong = 0;
+    for (cl_uint i = host.offsets[b]; i < host.offsets[b + 1]; ++i) wrong += seen[i] != host.words[i];
+    EXPECT_EQ(wrong, 0u) << host.names[b] << ": " << wrong << " of " << host.offsets[b + 1] - host.offsets[b]
+                         << " words differ";
+  }
+}
+
+// The environment tables follow their shared layout: each cdf starts at 0 and ends at 1.
+TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
+  Scene scene = test::envmap_scene();
+  SceneArrays a = scene_arrays(scene);
+  const GdrLight& env = a.lights.back();
+  ASSERT_EQ(env.type, LIGHT_ENVMAP);
+  const GdrTexture& t = a.textures[env.texture];
+  ASSERT_EQ(a.env_tables.size(), size_t(env.distribution_offset + env_table_size(t.width, t.height)));
+  const float* rows = &a.env_tables[env.distribution_offset];
+  EXPECT_EQ(rows[0], 0.0f);
+  EXPECT_EQ(rows[t.height], 1.0f);
+  for (int r = 0; r < t.height; ++r) {
+    const float* cols = rows + env_table_columns_offset(t.width, t.height, r);
+    EXPECT_EQ(cols[0], 0.0f) << "row " << r;
+    EXPECT_EQ(cols[t.width], 1.0f) << "row " << r;
+  }
+}
+
+}  // namespace
+}  // namespace gdr
