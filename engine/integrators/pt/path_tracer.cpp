@@ -36,7 +36,7 @@ PathTracer::PathTracer(Context& ctx, const Scene& scene, EmbreeScene& embree)
       shadow_values_(ctx, capacity_),
       counters_(ctx, PT_COUNTER_COUNT),
       film_(ctx, size_t(scene.camera.width) * scene.camera.height),
-      aux_(make_kernel(ctx, scene, "pt_aux")),
+      aux_(make_kernel(ctx, scene, "path_aux")),
       aux_albedo_(ctx, film_.size()),
       aux_normal_(ctx, film_.size()),
       aux_depth_(ctx, film_.size()) {}
