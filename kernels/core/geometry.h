@@ -42,11 +42,3 @@ inline float2 sample_triangle_barycentrics(float2 u) {
   float su = sqrt(u.x);
   return (float2)(su * (1.0f - u.y), su * u.y);
 }
-
-// Power heuristic (beta = 2) weight of strategy a against strategy b, written with the ratio so
-// that huge pdfs cannot overflow when squared.
-inline float power_heuristic(float pdf_a, float pdf_b) {
-  if (!(pdf_a > 0.0f)) return 0.0f;
-  float r = pdf_b / pdf_a;
-  return isfinite(r) ? 1.0f / (1.0f + r * r) : 0.0f;
-}

@@ -7,9 +7,12 @@
 //              scattering at its own vertex by reconnection, half-vector copy, delta-lobe copy or
 //              random-number replay;
 //   host       Embree: offset rays, reconnection segments; gpt_scatter files the results.
-// gpt_gather turns a pass's per-group sums into primal, gradient and direct-light images.
-// Each step lives in its own file; this program compiles them together.
-#include "gpt/gather.h"
+// gpt_gather turns a pass's per-group sums into primal, gradient and direct-light images;
+// path_aux writes the first hits' auxiliary layers. Each step lives in its own file (the stages
+// they share with the path tracer in kernels/path, the shifts in kernels/shift, the offsets and
+// the gather in kernels/gradient); this program compiles them together.
 #include "gpt/generate.h"
 #include "gpt/shade.h"
 #include "gpt/shift_step.h"
+#include "gradient/gather.h"
+#include "path/aux.h"

@@ -1,24 +1,31 @@
 // G-PT shade step: emission and next-event estimation of the base and its offsets with the
 // pairwise MIS weights, then the base's BSDF sample (offsets that share its vertex follow).
 #pragma once
-#include "core/rng.h"
-#include "gpt/common.h"
-#include "gpt/shift.h"
-#include "light/lights.h"
+#include "gradient/accumulators.h"
+#include "gradient/offsets.h"
+#include "path/continuation.h"
+#include "path/emission.h"
+#include "path/film.h"
+#include "path/nee.h"
+#include "path/scene.h"
+#include "path/shadow.h"
+#include "path/spawn.h"
+#include "shift/joined.h"
+#include "shift/reconnect.h"
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
 // and the offset's le_off (with q_off, the offset's own light-sampling pdf for that emitter),
 // weighted among the pair's four techniques. A dead offset leaves plain path-tracing MIS.
 inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const GptOffsetState* o, float p_bsdf,
-                              float p_light, float3 c_base, float3 le_off, float q_off, __global uint* counters) {
+                              float p_light, float3 c_base, float3 le_off, float q_off, __global uint* nonfinite) {
   float w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
   float3 c_off = (float3)(0.0f);
   if (offset_alive(o)) {
     w = gpt_weight(p_bsdf, p_light, o->ratio * safe_div(p_bsdf, o->last_pdf), o->last_pdf, q_off);
     c_off = vload3(0, o->throughput) * le_off;
   }
-  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w * c_base, counters));
-  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w * c_off, counters));
+  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w * c_base, nonfinite));
+  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w * c_off, nonfinite));
 }
 
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
@@ -27,18 +34,20 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
                         __global uint* counters, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
-  SceneData s = gpt_scene(&params, SCENE_DATA_NAMES);
+  SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
   GdrRayHit rh = base_in[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];
+  GdrPathState* st = &base.path;
   GptOffsetState o[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) o[k] = offsets[g * GPT_OFFSETS + k];
   for (int j = 0; j < GPT_PEND_COUNT; ++j) pend[g * GPT_PEND_COUNT + j] = (float4)(0.0f);
 
   float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
-  float3 beta = vload3(0, base.throughput);
+  float3 beta = vload3(0, st->throughput);
   int base_hit = rh.hit.geomID != GDR_INVALID_ID;
-  int direct = base.depth == 0;  // emission seen from the camera stays out of the gradients
+  int direct = st->depth == 0;  // emission seen from the camera stays out of the gradients
 
   // Outcomes of the last shift step: where each offset got to.
   for (int k = 0; k < GPT_OFFSETS; ++k) {
@@ -50,24 +59,23 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     }
   }
 
-  float p_bsdf = base.bsdf_pdf;
-  int last_specular = (base.flags & PATH_FLAG_SPECULAR) != 0;
+  float p_bsdf = st->bsdf_pdf;
+  int last_specular = (st->flags & PATH_FLAG_SPECULAR) != 0;
 
   if (!base_hit) {
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
     if (s.env_light >= 0) {
-      __global const GdrLight* env = &s.lights[s.env_light];
-      float3 le = environment_radiance(&s, env, dir);
+      float3 le = escaped_radiance(&s, dir);
       if (direct) {
-        acc_add(acc, base.pixel, GPT_ACC_DIRECT, checked(beta * le, counters));
+        acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
       } else {
-        float p_light = last_specular ? 0.0f : environment_pdf(&s, dir);
+        float p_light = last_specular ? 0.0f : escaped_light_pdf(&s, dir);
         for (int k = 0; k < GPT_OFFSETS; ++k) {
           // A traced offset escaped along its own direction; a joined one along the base's.
           float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
-          float q_off = o[k].last_delta ? 0.0f : environment_pdf(&s, d_off);
-          add_bsdf_emission(acc, base.pixel, k, &o[k], p_bsdf, p_light, beta * le,
-                            environment_radiance(&s, env, d_off), q_off, counters);
+          float q_off = o[k].last_delta ? 0.0f : escaped_light_pdf(&s, d_off);
+          add_bsdf_emission(acc, st->pixel, k, &o[k], p_bsdf, p_light, beta * le, escaped_radiance(&s, d_off), q_off,
+                            nonfinite);
         }
       }
     }
@@ -94,11 +102,11 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
 #if defined(GDR_LIGHT_AREA)
   // Emission found by BSDF sampling.
   if (su.light >= 0 || !direct) {
-    float3 le = su.light >= 0 ? area_radiance(&s, su.light, su.ng, wo) : (float3)(0.0f);
+    float3 le = su.light >= 0 ? surface_radiance(&s, &su, wo) : (float3)(0.0f);
     if (direct) {
-      acc_add(acc, base.pixel, GPT_ACC_DIRECT, checked(beta * le, counters));
+      acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
     } else {
-      float p_light = (last_specular || su.light < 0) ? 0.0f : area_pdf(&s, su.light, su.area, rh.ray.tfar, dot(su.ng, wo));
+      float p_light = (last_specular || su.light < 0) ? 0.0f : surface_light_pdf(&s, &su, rh.ray.tfar, wo);
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         float3 le_off = (float3)(0.0f);
         float q_off = 0.0f;
@@ -106,16 +114,16 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
           float dist = o[k].mode == GPT_MODE_TRACE          ? o[k].t
                        : o[k].mode == GPT_MODE_JOINED_RECENT ? length(vload3(0, o[k].prev_pos) - su.p)
                                                              : rh.ray.tfar;
-          le_off = area_radiance(&s, so[k].light, so[k].ng, wo_off[k]);
-          if (!o[k].last_delta) q_off = area_pdf(&s, so[k].light, so[k].area, dist, dot(so[k].ng, wo_off[k]));
+          le_off = surface_radiance(&s, &so[k], wo_off[k]);
+          if (!o[k].last_delta) q_off = surface_light_pdf(&s, &so[k], dist, wo_off[k]);
         }
-        add_bsdf_emission(acc, base.pixel, k, &o[k], p_bsdf, p_light, beta * le, le_off, q_off, counters);
+        add_bsdf_emission(acc, st->pixel, k, &o[k], p_bsdf, p_light, beta * le, le_off, q_off, nonfinite);
       }
     }
   }
 #endif
 
-  if (params.path.max_depth > 0 && base.depth + 2 > params.path.max_depth) {
+  if (path_depth_reached(st, params.path.max_depth)) {
     for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
     return;
   }
@@ -123,131 +131,93 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   Bsdf b = surface_bsdf(&s, &su);
   Frame frame = frame_from_normal(su.ns);
   float3 wo_l = frame_to_local(&frame, wo);
+  PathSampler ps = path_state_sampler(st, params.path.seed);
 
   // Next-event estimation: the base samples a light point; offsets reconnect to the same point.
-  if (s.light_count > 0 && !bsdf_is_delta(&b)) {
-    float4 ul = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_LIGHT(base.depth));
-    int light = light_select(&s, ul.x);
-    LightSample ls;
-    int usable = light_sample(&s, light, su.p, ul.yz, &ls);
-    float3 wi_l = usable ? frame_to_local(&frame, ls.wi) : (float3)(0.0f);
-    // A light sample the base cannot use (shading and geometric normals disagree) is no sample
-    // at all, also for its offsets: the neighbour's base rejects the mirrored case the same way,
-    // which keeps the pairwise weights summing to one.
-    if (usable && dot(ls.wi, su.ng) * wi_l.z > 0.0f) {
-      float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
-      float3 c_base = beta * f_le;
-      float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
-      int base_ray_needed = 0;
-      for (int k = 0; k < GPT_OFFSETS; ++k) {
-        float w = gpt_weight(p_light, p_b, 0.0f, 0.0f, 0.0f);
-        float3 c_off = (float3)(0.0f);
-        int own_ray = 0;
-        if (o[k].mode == GPT_MODE_JOINED) {
-          w = gpt_weight(p_light, p_b, o[k].ratio, p_light, p_b);
-          c_off = vload3(0, o[k].throughput) * f_le;
-        } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
-          float3 wr = frame_to_local(&frame, wo_off[k]);
-          float q_b = ls.delta ? 0.0f : bsdf_pdf(&b, wr, wi_l);
-          w = gpt_weight(p_light, p_b, o[k].ratio, p_light, q_b);
-          c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf;
-        } else if (o[k].mode == GPT_MODE_TRACE) {
-          Bsdf bo = surface_bsdf(&s, &so[k]);
-          LightSample lo = ls;
-          if (!bsdf_is_delta(&bo) && light_connect(&s, light, so[k].p, &lo)) {
-            Frame fo = frame_from_normal(so[k].ns);
-            float3 wol = frame_to_local(&fo, wo_off[k]), wil = frame_to_local(&fo, lo.wi);
-            if (dot(lo.wi, so[k].ng) * wil.z > 0.0f) {
-              float q_b = lo.delta ? 0.0f : bsdf_pdf(&bo, wol, wil);
-              float jac = 1.0f;
-              if (!lo.delta && !isinf(lo.dist)) jac = reconnect_jacobian(su.p, so[k].p, so[k].p + lo.wi * lo.dist, lo.light_normal);
-              w = gpt_weight(p_light, p_b, o[k].ratio, p_light, jac * q_b);
-              c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf;
-              own_ray = c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f;
-              if (own_ray) {
-                c_off = checked(w * c_off, counters);
-                pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
-                uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-                write_light_ray(&shadow_rays[r], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
-              }
+  // A light sample the base cannot use (shading and geometric normals disagree) is no sample at
+  // all, also for its offsets: the neighbour's base rejects the mirrored case the same way, which
+  // keeps the pairwise weights summing to one.
+  int light;
+  LightSample ls;
+  float3 wi_l;
+  if (nee_applies(&s, &b) && nee_sample(&s, &ps, st->depth, &su, &frame, &light, &ls, &wi_l)) {
+    float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
+    float3 c_base = beta * f_le;
+    float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
+    int base_ray_needed = 0;
+    for (int k = 0; k < GPT_OFFSETS; ++k) {
+      float w = gpt_weight(p_light, p_b, 0.0f, 0.0f, 0.0f);
+      float3 c_off = (float3)(0.0f);
+      int own_ray = 0;
+      if (o[k].mode == GPT_MODE_JOINED) {
+        w = gpt_weight(p_light, p_b, o[k].ratio, p_light, p_b);
+        c_off = vload3(0, o[k].throughput) * f_le;
+      } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
+        float3 wr = frame_to_local(&frame, wo_off[k]);
+        float q_b = ls.delta ? 0.0f : bsdf_pdf(&b, wr, wi_l);
+        w = gpt_weight(p_light, p_b, o[k].ratio, p_light, q_b);
+        c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf;
+      } else if (o[k].mode == GPT_MODE_TRACE) {
+        Bsdf bo = surface_bsdf(&s, &so[k]);
+        LightSample lo = ls;
+        if (!bsdf_is_delta(&bo) && light_connect(&s, light, so[k].p, &lo)) {
+          Frame fo = frame_from_normal(so[k].ns);
+          float3 wol = frame_to_local(&fo, wo_off[k]), wil = frame_to_local(&fo, lo.wi);
+          if (sides_agree(lo.wi, so[k].ng, wil.z)) {
+            float q_b = lo.delta ? 0.0f : bsdf_pdf(&bo, wol, wil);
+            float jac = 1.0f;
+            if (!lo.delta && !isinf(lo.dist)) jac = reconnect_jacobian(su.p, so[k].p, so[k].p + lo.wi * lo.dist, lo.light_normal);
+            w = gpt_weight(p_light, p_b, o[k].ratio, p_light, jac * q_b);
+            c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf;
+            own_ray = c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f;
+            if (own_ray) {
+              c_off = checked(w * c_off, nonfinite);
+              pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
+              uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+              write_light_ray(&shadow_rays[r], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
             }
           }
         }
-        float3 cb = checked(w * c_base, counters);
-        pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
-        base_ray_needed |= cb.x > 0.0f || cb.y > 0.0f || cb.z > 0.0f;
-        if (!own_ray && (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT)) {
-          float3 co = checked(w * c_off, counters);
-          pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
-          base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
-        }
       }
-      if (base_ray_needed) {
-        uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-        write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
+      float3 cb = checked(w * c_base, nonfinite);
+      pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
+      base_ray_needed |= cb.x > 0.0f || cb.y > 0.0f || cb.z > 0.0f;
+      if (!own_ray && (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT)) {
+        float3 co = checked(w * c_off, nonfinite);
+        pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
+        base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
       }
+    }
+    if (base_ray_needed) {
+      uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+      write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
     }
   }
 
   // The base's BSDF sample; Russian roulette is decided by the base.
-  float4 ub = rng_block(params.path.seed, base.pixel, base.sample, RNG_BLOCK_BSDF(base.depth));
   BsdfSample bs;
-  int alive = bsdf_sample(&b, wo_l, ub.xyz, &bs);
-  float3 wi = alive ? frame_to_world(&frame, bs.wi) : wo;
-  alive = alive && dot(wi, su.ng) * bs.wi.z > 0.0f;
-  if (alive) {
-    beta *= bs.weight;
-    alive = is_finite3(beta) && max3(beta) > 0.0f;
-  }
-  float rr = 1.0f;
-  if (alive && base.depth + 1 >= params.path.rr_depth) {
-    rr = fmin(max3(beta), 0.95f);
-    alive = ub.w < rr;
-  }
-  if (!alive) {
+  float3 wi;
+  float rr;
+  if (path_continue(st, &ps, params.path.rr_depth, &b, &frame, su.ng, wo_l, &beta, &bs, &wi, &rr) != PATH_CONTINUES) {
     for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
     return;
   }
-  beta /= rr;
 
   // Offsets that share this vertex follow the base's sample directly.
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     if (o[k].mode != GPT_MODE_JOINED && o[k].mode != GPT_MODE_JOINED_RECENT) continue;
-    float3 t = vload3(0, o[k].throughput);
-    if (o[k].mode == GPT_MODE_JOINED) {
-      t *= bs.weight;
-      o[k].last_pdf = bs.pdf;
+    ShiftPrefix pre = offset_prefix(&o[k]);
+    int reason = shift_follow_base(&b, &frame, o[k].mode == GPT_MODE_JOINED_RECENT, wo_off[k], &bs, rr, &pre);
+    if (reason) {
+      kill_offset(&o[k], counters, reason);
     } else {
-      float3 wr = frame_to_local(&frame, wo_off[k]);
-      float3 f = bsdf_eval(&b, wr, bs.wi);
-      float p = bsdf_pdf(&b, wr, bs.wi);
-      if (bs.delta || !(p > 0.0f) || max3(f) <= 0.0f) {
-        kill_offset(&o[k], counters, GPT_COUNTER_FAIL_ZERO);
-        continue;
-      }
-      t *= f / bs.pdf;
-      o[k].ratio *= p / bs.pdf;
-      o[k].last_pdf = p;
+      offset_keep(&o[k], &pre);
       o[k].mode = GPT_MODE_JOINED;
     }
-    o[k].last_delta = bs.delta;
-    if (rr < 1.0f) {
-      // The offset's own-base Russian roulette would have used its own throughput.
-      o[k].ratio *= fmin(max3(t / o[k].ratio), 0.95f) / rr;
-      t /= rr;
-    }
-    if (!is_finite3(t) || !isfinite(o[k].ratio)) {
-      kill_offset(&o[k], counters, GPT_COUNTER_FAIL_NONFINITE);
-      continue;
-    }
-    vstore3(t, 0, o[k].throughput);
   }
   for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
 
-  base.depth += 1;
-  base.bsdf_pdf = bs.pdf;
-  base.flags = bs.delta ? PATH_FLAG_SPECULAR : 0;
-  vstore3(beta, 0, base.throughput);
+  path_advance(st, beta, &bs);
   base.prim = rh.hit.primID;
   base.b1 = rh.hit.u;
   base.b2 = rh.hit.v;
@@ -259,7 +229,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   base.rr_prob = rr;
   bases[g] = base;
   uint slot = atomic_inc(&counters[GPT_COUNTER_BASE_RAYS]);
-  write_ray_hit(&base_out[slot], offset_ray_origin(su.p, dot(wi, su.ng) > 0.0f ? su.ng : -su.ng), wi, 0.0f, INFINITY, g);
+  spawn_ray(&base_out[slot], su.p, su.ng, wi, g);
 }
 
 // Adds the next-event contributions whose shadow rays Embree found unoccluded.
@@ -268,9 +238,9 @@ __kernel void gpt_shadow(uint count, __global const GdrRay* shadow_rays, __globa
   uint i = get_global_id(0);
   if (i >= count) return;
   GdrRay r = shadow_rays[i];
-  if (r.tfar < 0.0f) return;
+  if (!shadow_unoccluded(r.tfar)) return;
   uint g = r.id / 8u, kind = r.id % 8u;
-  uint pixel = bases[g].pixel;
+  uint pixel = bases[g].path.pixel;
   // The base's ray (kind 0) and offset k's own ray both add to ACC_OFFSET(k) without atomics:
   // safe because an offset is either joined (its share rides on the base's ray, PEND_JOINED) or
   // traced (its own ray, PEND_OWN), never both, and acc_add skips the zero entries.

@@ -36,12 +36,7 @@ typedef struct GptOffsetState {
 } GptOffsetState;
 
 typedef struct GptBaseState {
-  float throughput[3];
-  float bsdf_pdf;       // pdf of the last BSDF sample (solid angle; a delta lobe's selection probability)
-  unsigned int pixel;
-  unsigned int sample;
-  int depth;
-  int flags;            // PATH_FLAG_*
+  GdrPathState path;    // the state every path carries (kernels/path stages work on it)
   // The vertex x_k shaded in the last shade step, for the shift step that follows.
   unsigned int prim;
   float b1, b2;

@@ -1,6 +1,9 @@
-// Test kernels for the gradient-domain shift mappings (kernels/gpt/shift.h): the host drives
-// them with random configurations and checks invertibility, Jacobians and MIS weights.
-#include "gpt/shift.h"
+// Test kernels for the gradient-domain shift mappings (kernels/shift) and their MIS weights
+// (kernels/path/mis.h): the host drives them with random configurations and checks
+// invertibility, Jacobians and weights.
+#include "path/mis.h"
+#include "shift/half_vector.h"
+#include "shift/reconnect.h"
 
 // in[i]: wo, wi, wo_off (float4 each, w unused), and params (transmitted, eta_material).
 // out[i]: wi_off (xyz) + jacobian (w); then the reverse shift of wi_off from wo_off back at wo:

@@ -1,6 +1,7 @@
-// G-PT gather: a pass's per-pixel sums into primal, gradient and direct-light films.
+// The gradient-domain gather: a pass's per-pixel sums into primal, gradient and direct-light films.
 #pragma once
-#include "gpt/common.h"
+#include "gradient/accumulators.h"
+#include "gradient/neighbours.h"
 
 // One pass's sums into the film: the primal (each pixel the mean of its four pairwise
 // estimates), the forward-difference gradients, and directly seen emission.
@@ -16,7 +17,7 @@ __kernel void gpt_gather(int width, int height, __global const float4* acc, __gl
     int nx = x + OFFSET_PIXEL_DX(k), ny = y + OFFSET_PIXEL_DY(k);
     if (nx >= 0 && ny >= 0 && nx < width && ny < height) {
       uint n = (uint)(ny * width + nx);
-      int opposite = k ^ 1;  // PX <-> NX, PY <-> NY
+      int opposite = OFFSET_OPPOSITE(k);
       pairs += acc[n * GPT_ACC_COUNT + GPT_ACC_OFFSET(opposite)].xyz;
     }
   }
