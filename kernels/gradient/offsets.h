@@ -1,6 +1,6 @@
 // Offset paths (GptOffsetState): alive or killed, and the prefix the shifts update.
 #pragma once
-#include "shared/gpt_types.h"
+#include "shared/gradient_types.h"
 #include "shift/prefix.h"
 
 // A failed shift: the offset contributes nothing from here on and its base takes the full

@@ -12,8 +12,8 @@
 #include "shift/reconnect.h"
 #include "shift/replay.h"
 
-// Rough enough to reconnect: roughness above the threshold (GdrGptParams.shift_threshold).
-inline int is_diffuse(const Bsdf* b, float threshold) { return bsdf_roughness(b) > threshold; }
+// Rough enough to reconnect (shared/material_class.h; threshold: GdrGptParams.shift_threshold).
+inline int is_diffuse(const Bsdf* b, float threshold) { return material_is_diffuse(bsdf_roughness(b), threshold); }
 
 // The base's scattering at x_k.
 typedef struct ShiftBase {
