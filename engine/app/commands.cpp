@@ -33,11 +33,7 @@ int list_integrators_command() {
 
 int info_command(const Options& o) {
   DeviceInfo device = select_device(o.device);
-  LoadOptions load;
-  load.defines = o.defines;
-  load.strict = o.strict;
-  load.glossy_threshold = IntegratorParams(o.integrator_params).non_negative("shift_threshold", GDR_GLOSSY_THRESHOLD);
-  Scene scene = load_scene(o.info_scene, load);
+  Scene scene = load_scene(o.info_scene, load_options(o));
   std::printf("%s", describe_scene(scene).c_str());
   std::printf("device: [%d] %s (%s)\n", device.index, device.name.c_str(), device.platform_name.c_str());
   return 0;

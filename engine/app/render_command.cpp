@@ -63,17 +63,21 @@ nlohmann::json settings_json(const Options& o, const RenderSettings& s, const In
 
 }  // namespace
 
+LoadOptions load_options(const Options& o) {
+  LoadOptions load;
+  load.defines = o.defines;
+  load.strict = o.strict;
+  load.glossy_threshold = IntegratorParams(o.integrator_params).non_negative("shift_threshold", GDR_GLOSSY_THRESHOLD);
+  return load;
+}
+
 int render_command(const Options& o) {
   Stats stats;
   ScopedTimer total(&stats, "total");
   IntegratorParams params(o.integrator_params);
-  LoadOptions load;
-  load.defines = o.defines;
-  load.strict = o.strict;
-  load.glossy_threshold = params.non_negative("shift_threshold", GDR_GLOSSY_THRESHOLD);
   Scene scene = [&] {
     ScopedTimer t(&stats, "scene/load");
-    return load_scene(o.scene, load);
+    return load_scene(o.scene, load_options(o));
   }();
   if (!o.filter.empty()) {
     scene.camera.filter = o.filter == "box" ? FILTER_BOX : o.filter == "tent" ? FILTER_TENT : FILTER_GAUSSIAN;

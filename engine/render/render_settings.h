@@ -12,7 +12,7 @@ struct RenderSettings {
   int spp = 16;                        // samples per pixel; 0: until the time budget runs out
   std::optional<double> time_budget;   // seconds; stops after the pass that crosses it
   uint32_t seed = 0;
-  int max_depth = 16;                  // Mitsuba's convention: path segments; <= 0 unbounded
+  int max_depth = 16;                  // Mitsuba's convention: path segments; < 0 unbounded, 0 nothing
   int rr_depth = 5;                    // bounces before Russian roulette
   bool progress = false;               // progress line on stderr
 };

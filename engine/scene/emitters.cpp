@@ -103,10 +103,15 @@ void load_emitter(LoadContext& ctx, const XmlNode& node) {
   } else if (type == "envmap") {
     const XmlNode* fn = p.find("filename");
     if (!fn) throw InputError(node.file, node.line, "<emitter type=\"envmap\"> needs a filename");
+    double scale = p.get_float("scale", 1.0);
+    if (scale < 0) {
+      const XmlNode* n = p.find("scale");
+      throw InputError(n->file, n->line, "envmap 'scale' must not be negative");
+    }
     std::string path = ctx.doc.resolve(p.get_string("filename", ""), *fn);
     GdrLight l = base_light(LIGHT_ENVMAP);
     l.texture = load_image_texture(ctx, path, *fn, false, true);
-    set4(l.radiance, Rgb(static_cast<float>(p.get_float("scale", 1.0))));
+    set4(l.radiance, Rgb(static_cast<float>(scale)));
     // Only the rotation matters for a distant light: drop the translation.
     Mat4d rot = to_world;
     rot.m[0][3] = rot.m[1][3] = rot.m[2][3] = 0;

@@ -25,6 +25,33 @@ void read_integrator(LoadContext& ctx, const XmlNode& node) {
   ctx.scene.integrator_file = node.file;
   ctx.scene.integrator_line = node.line;
   ctx.scene.max_depth = p.get_int("max_depth", -1);
+  if (ctx.scene.max_depth < -1) {
+    throw InputError(node.file, node.line, "max_depth must be -1 (unbounded) or >= 0");
+  }
+  // Mitsuba's direct illumination is path tracing of two segments: emission seen directly and
+  // light scattered once.
+  if (ctx.scene.integrator == "direct") {
+    ctx.scene.integrator = "path";
+    ctx.scene.max_depth = 2;
+  }
+  // Path-tracer parameters of Mitsuba that the render settings cover or that change nothing here.
+  p.known({"rr_depth", "samples_per_pass", "emitter_samples", "bsdf_samples"});
+}
+
+// A named property of a plugin that the loader never looked up is a parameter gdrender does not
+// know: a warning naming its file and line, an error with --strict.
+void report_unread_parameters(LoadContext& ctx, const XmlNode& node) {
+  for (const auto& child : node.children) {
+    // Elements already reported as unsupported are not reported again, nor are their children.
+    if (ctx.reported.count(&node) || ctx.reported.count(child.get())) continue;
+    if (node.loaded && !child->read && child->attr("name") && child->tag != "default") {
+      std::string problem = "<" + child->tag + " name=\"" + child->name() + "\">: " + node.describe() +
+                            " has no such parameter in gdrender";
+      if (ctx.options.strict) throw InputError(child->file, child->line, problem);
+      ctx.warn(child->file + ":" + std::to_string(child->line) + ": " + problem + "; ignored");
+    }
+    report_unread_parameters(ctx, *child);
+  }
 }
 
 void compute_bounds(Scene& s) {
@@ -91,7 +118,10 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
     load_emitter(ctx, *e);
   }
   finish_lights(ctx);
+  if (scene.lights.empty()) ctx.warn(path + ": the scene has no emitter: the image is black");
   if (!ctx.has_sensor) default_camera(ctx);
+  report_unread_parameters(ctx, *doc.root);
+  for (const std::string& w : doc.warnings) ctx.warn(w);
   if (ctx.degenerate_triangles) {
     ctx.warn(path + ": " + std::to_string(ctx.degenerate_triangles) + " degenerate (zero-area) triangles kept");
   }

@@ -54,12 +54,22 @@ void read_eta(const Props& p, GdrMaterial& m, const char* default_int) {
   set4(m.eta, Rgb(int_ior / ext_ior));
 }
 
+// A reflectance or transmittance above 1 creates energy (Mitsuba renders it as given): clamped,
+// with a warning naming the value's file and line.
+Rgb at_most_one(LoadContext& ctx, const Props& p, const std::string& name, Rgb c) {
+  if (c.max() <= 1.0f) return c;
+  const XmlNode* n = p.find(name);
+  ctx.warn(n->file + ":" + std::to_string(n->line) + ": '" + name + "' above 1 would reflect more light than " +
+           "arrives: clamped to 1");
+  return Rgb(std::min(c.r, 1.0f), std::min(c.g, 1.0f), std::min(c.b, 1.0f));
+}
+
 Rgb read_constant(LoadContext& ctx, const Props& p, const std::string& name, Rgb fallback) {
   if (const XmlNode* t = p.texture(name)) {
     ctx.unsupported(*t, "texture for '" + name + "' not supported: using " + std::to_string(fallback.r));
     return fallback;
   }
-  return p.get_color(name, fallback, SpectrumUse::Reflectance);
+  return at_most_one(ctx, p, name, p.get_color(name, fallback, SpectrumUse::Reflectance));
 }
 
 void read_roughness(LoadContext& ctx, const Props& p, GdrMaterial& m) {
@@ -89,7 +99,7 @@ void read_reflectance(LoadContext& ctx, const Props& p, const std::string& name,
     m.reflectance_texture = load_texture(ctx, *t);
     return;
   }
-  set4(m.reflectance, p.get_color(name, Rgb(0.5f), SpectrumUse::Reflectance));
+  set4(m.reflectance, at_most_one(ctx, p, name, p.get_color(name, Rgb(0.5f), SpectrumUse::Reflectance)));
 }
 
 void read_conductor(LoadContext& ctx, const Props& p, GdrMaterial& m) {

@@ -93,6 +93,8 @@ void load_sensor(LoadContext& ctx, const XmlNode& node) {
   }
   ctx.has_sensor = true;
   Props p = ctx.props(node);
+  // A pinhole camera is in focus at every distance.
+  p.known({"focus_distance"});
   std::string type = p.type();
   if (type != "perspective") {
     ctx.unsupported(node, "sensor type not supported: rendered as a pinhole perspective camera");
@@ -106,6 +108,8 @@ void load_sensor(LoadContext& ctx, const XmlNode& node) {
   std::vector<const XmlNode*> films = p.nested("film");
   if (!films.empty()) {
     Props f = ctx.props(*films.front());
+    // The output file's format is gdrender's own (EXR of 32-bit floats, PNG beside it).
+    f.known({"file_format", "pixel_format", "component_format", "banner", "high_quality_edges", "attach_log"});
     cam.width = f.get_int("width", 768);
     cam.height = f.get_int("height", 576);
     if (cam.width <= 0 || cam.height <= 0 || cam.width > 65536 || cam.height > 65536) {
@@ -118,7 +122,9 @@ void load_sensor(LoadContext& ctx, const XmlNode& node) {
   }
   std::vector<const XmlNode*> samplers = p.nested("sampler");
   if (!samplers.empty()) {
-    int spp = ctx.props(*samplers.front()).get_int("sample_count", 4);
+    Props sampler = ctx.props(*samplers.front());
+    sampler.known({"seed"});  // gdrender's --seed decides the noise
+    int spp = sampler.get_int("sample_count", 4);
     if (spp <= 0) throw InputError(samplers.front()->file, samplers.front()->line, "sample_count must be positive");
     ctx.scene.spp = spp;
   }

@@ -61,6 +61,7 @@ void load_shape(LoadContext& ctx, const XmlNode& node) {
     return;
   }
   validate_mesh(mesh, node.file);
+  if (mesh.triangle_count() == 0) ctx.warn(node.describe() + ": the mesh has no triangles: nothing to render");
   if (std::fabs(to_world.det3()) < 1e-30) throw InputError(node.file, node.line, "shape to_world is singular");
   if (p.get_bool("face_normals", false)) mesh.normals.clear();
   for (const char* medium : {"interior", "exterior"}) {

@@ -49,7 +49,7 @@ int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode&
   t.offset = static_cast<int>(ctx.scene.texels.size());
   t.bilinear = bilinear ? 1 : 0;
   identity_uv(t);
-  size_t non_finite = 0;
+  size_t non_finite = 0, negative = 0;
   for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
     const float* px = &pixels[i * nc];
     float c[3] = {px[0], nc >= 3 ? px[1] : px[0], nc >= 3 ? px[2] : px[0]};
@@ -57,12 +57,16 @@ int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode&
       if (!std::isfinite(v)) {
         v = 0.0f;
         ++non_finite;
+      } else if (v < 0.0f) {  // no reflectance or radiance is negative
+        v = 0.0f;
+        ++negative;
       }
       if (decode) v = srgb_to_linear(v);
     }
     ctx.scene.texels.push_back({c[0], c[1], c[2], nc == 4 || nc == 2 ? px[nc - 1] : 1.0f});
   }
   if (non_finite) ctx.warn(path + ": " + std::to_string(non_finite) + " non-finite texel values replaced by 0");
+  if (negative) ctx.warn(path + ": " + std::to_string(negative) + " negative texel values replaced by 0");
   ctx.scene.textures.push_back(t);
   return static_cast<int>(ctx.scene.textures.size()) - 1;
 }

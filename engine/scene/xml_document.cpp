@@ -136,6 +136,12 @@ class Builder {
     if (std::string(root.name()) == "scene") {
       std::string v = root.attribute("version").value();
       if (!v.empty() && std::isdigit(static_cast<unsigned char>(v[0]))) version = std::atoi(v.c_str());
+      // Mitsuba 0.x (camelCase) and 2.x/3.x (snake_case) are the dialects read here.
+      if (version != 0 && version != 2 && version != 3) {
+        doc_.warnings.push_back(path + ":" + std::to_string(file.line_of(root.offset_debug())) +
+                                ": <scene version=\"" + v + "\">: unknown version, read as Mitsuba 3");
+        version = 3;
+      }
       if (top) {
         parent.file = path;
         parent.line = file.line_of(root.offset_debug());

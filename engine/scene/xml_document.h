@@ -18,6 +18,11 @@ struct XmlNode {
   std::string file;  // the file the element was written in
   int line = 0;
   int version_major = 3;  // from that file's <scene version="...">
+  // Set by the loader: the element was read as a plugin (its properties were looked up), and the
+  // element was looked up as a property. A plugin's named child that was never looked up is a
+  // parameter gdrender does not know (a typo, or one it does not reproduce).
+  mutable bool loaded = false;
+  mutable bool read = false;
 
   // The attribute's value, or nullptr.
   const std::string* attr(const std::string& name) const;
@@ -35,6 +40,9 @@ struct XmlDocument {
   std::map<std::string, const XmlNode*> ids;
   std::vector<std::string> parameters;      // names of the scene's <default>s
   std::vector<std::string> unused_defines;  // caller's defines the scene neither declares nor uses
+  // Things worth a warning found while reading the document (an unknown version, a <lookat>
+  // whose up vector had to be replaced), each naming file and line.
+  mutable std::vector<std::string> warnings;
 
   // The element `id` refers to; InputError naming `from` when there is none.
   const XmlNode& lookup(const std::string& id, const XmlNode& from) const;

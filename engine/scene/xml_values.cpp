@@ -183,6 +183,7 @@ const XmlNode* Props::find(const std::string& name) const {
   for (const auto& child : node_.children) {
     const std::string* n = child->attr("name");
     if (!n || *n != name) continue;
+    child->read = true;
     if (child->tag == "ref") return &doc_.lookup(required(*child, "id"), *child);
     return child.get();
   }
@@ -231,13 +232,29 @@ Mat4d Props::get_transform(const std::string& name) const {
   const XmlNode* n = find(name);
   if (!n) return Mat4d{};
   if (n->tag != "transform") bad(*n, "'" + name + "' must be a <transform>");
-  return parse_transform(*n);
+  Mat4d m = parse_transform(*n);
+  for (const auto& op : n->children) {
+    if (op->tag != "lookat") continue;
+    Vec3d origin = attr_vec3(*op, "origin"), target = attr_vec3(*op, "target");
+    Vec3d up = op->attr("up") ? attr_vec3(*op, "up") : Vec3d{0, 1, 0};
+    if (length(cross(up, target - origin)) == 0) {
+      doc_.warnings.push_back(op->file + ":" + std::to_string(op->line) +
+                              ": <lookat>: the up vector is parallel to the view direction (or zero); another "
+                              "perpendicular one is used");
+    }
+  }
+  return m;
 }
 
 Rgb Props::get_color(const std::string& name, Rgb fallback, SpectrumUse use) const {
   const XmlNode* n = find(name);
   if (!n || n->tag == "texture") return fallback;
-  return parse_color(*n, use);
+  Rgb c = parse_color(*n, use);
+  for (float v : {c.r, c.g, c.b}) {
+    if (!std::isfinite(v)) bad(*n, "'" + name + "' is not finite");
+    if (v < 0) bad(*n, "'" + name + "' must not be negative");
+  }
+  return c;
 }
 
 const XmlNode* Props::texture(const std::string& name) const {
@@ -252,7 +269,10 @@ std::vector<const XmlNode*> Props::nested(const std::string& tag) const {
       out.push_back(child.get());
     } else if (child->tag == "ref") {
       const XmlNode& target = doc_.lookup(required(*child, "id"), *child);
-      if (target.tag == tag) out.push_back(&target);
+      if (target.tag == tag) {
+        out.push_back(&target);
+        child->read = true;
+      }
     }
   }
   return out;

@@ -2,6 +2,7 @@
 // <vector>, <rgb>, <srgb>, <spectrum>, <blackbody>, <transform>, named <ref>s and nested plugins.
 // Every malformed value is an InputError naming the file, line and attribute.
 #pragma once
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ Mat4d parse_transform(const XmlNode& node);
 // The properties of one plugin element.
 class Props {
  public:
-  Props(const XmlNode& node, const XmlDocument& doc) : node_(node), doc_(doc) {}
+  Props(const XmlNode& node, const XmlDocument& doc) : node_(node), doc_(doc) { node.loaded = true; }
   const XmlNode& node() const { return node_; }
   const XmlDocument& doc() const { return doc_; }
   std::string type() const { return node_.type(); }
@@ -40,9 +41,16 @@ class Props {
   std::string get_string(const std::string& name, const std::string& fallback) const;
   Vec3d get_vec3(const std::string& name, Vec3d fallback) const;
   Mat4d get_transform(const std::string& name) const;  // identity when absent
-  // A colour given as a value; nullptr from texture() when it is a constant.
+  // A colour given as a value (InputError when it is not finite or negative); nullptr from
+  // texture() when it is a constant.
   Rgb get_color(const std::string& name, Rgb fallback, SpectrumUse use) const;
   const XmlNode* texture(const std::string& name) const;
+
+  // Marks parameters as known although nothing here reads them (they change nothing in
+  // gdrender's output, such as a film's pixel format), so they are not reported as unknown.
+  void known(std::initializer_list<const char*> names) const {
+    for (const char* n : names) find(n);
+  }
 
   // Nested plugins with this tag, named or not, <ref>s resolved, in document order.
   std::vector<const XmlNode*> nested(const std::string& tag) const;

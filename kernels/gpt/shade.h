@@ -33,7 +33,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
                         __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
                         __global uint* counters, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
-  if (q >= count) return;
+  if (q >= count || path_no_segments(params.path.max_depth)) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
   __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
   GdrRayHit rh = base_in[q];

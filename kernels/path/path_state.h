@@ -20,7 +20,11 @@ inline PathSampler path_state_sampler(const GdrPathState* st, uint seed) {
   return path_sampler(seed, st->pixel, st->sample);
 }
 
-// Mitsuba's max_depth counts segments: the next vertex would make depth + 2 of them.
+// Mitsuba's max_depth 0: not even the camera segment counts, so nothing is seen.
+inline int path_no_segments(int max_depth) { return max_depth == 0; }
+
+// Mitsuba's max_depth counts segments: the next vertex would make depth + 2 of them (< 0:
+// unbounded).
 inline int path_depth_reached(const GdrPathState* st, int max_depth) {
   return max_depth > 0 && st->depth + 2 > max_depth;
 }

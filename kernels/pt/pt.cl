@@ -33,7 +33,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
                        __global GdrPathState* paths, __global float4* film, __global uint* counters,
                        SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
-  if (q >= count) return;
+  if (q >= count || path_no_segments(params.max_depth)) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   __global uint* nonfinite = &counters[PT_COUNTER_NONFINITE];
   uint slot = queue_in[q];

@@ -19,7 +19,7 @@ typedef struct GdrPtParams {
   unsigned int first_pixel;  // the queue's slot (gpt: group) i traces pixel first_pixel + i
   unsigned int pixel_count;  // slots in this chunk
   unsigned int sample;       // sample index of the pass
-  int max_depth;             // longest path in segments (camera vertex excluded); <=0: unbounded
+  int max_depth;             // longest path in segments (camera vertex excluded); < 0: unbounded
   int rr_depth;              // bounces before Russian roulette starts
   int light_count;
   int env_light;             // index of the environment light, or -1

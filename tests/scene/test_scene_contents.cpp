@@ -32,7 +32,7 @@ double triangle_area(const Scene& s, const GdrTriangle& t, double n[3]) {
 TEST(SceneShapes, SphereAreaAndOutwardNormals) {
   test::TempFolder folder;
   Scene s = load_body(folder, R"(<shape type="sphere"><point name="center" x="1" y="2" z="3"/>
-    <float name="radius" value="2"/></shape>)");
+    <float name="radius" value="2"/></shape><emitter type="constant"/>)");
   double area = 0;
   for (const GdrTriangle& t : s.triangles) {
     double n[3];
@@ -97,7 +97,7 @@ TEST(SceneShapes, MeshWithoutNormalsKeepsZeroNormalsAndFlags) {
   folder.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 1 2\n");
   Scene s = load_body(folder, R"(
     <shape type="obj"><string name="filename" value="tri.obj"/><boolean name="face_normals" value="true"/>
-      <transform name="to_world"><scale value="3"/></transform></shape>)");
+      <transform name="to_world"><scale value="3"/></transform></shape><emitter type="constant"/>)");
   EXPECT_EQ(s.normals.size(), s.positions.size());
   EXPECT_EQ(s.uvs.size(), 2 * s.positions.size());
   EXPECT_FALSE(s.shapes[0].flags & SHAPE_HAS_NORMALS);
@@ -191,7 +191,7 @@ TEST(SceneUnsupported, WarningNamesElementAndSubstituteOrStrictError) {
   std::string body = R"(<shape type="cube"><bsdf type="principled"/></shape>
     <shape type="cube"><bsdf type="bumpmap"><texture type="bitmap" name="arbitrary"/>
       <bsdf type="conductor"/></bsdf></shape>
-    <medium type="homogeneous" id="fog"/>)";
+    <medium type="homogeneous" id="fog"/><emitter type="constant"/>)";
   Scene s = load_body(folder, body);
   ASSERT_EQ(s.warnings.size(), 3u);
   EXPECT_NE(s.warnings[0].find("<bsdf type=\"principled\"> at "), std::string::npos) << s.warnings[0];
