@@ -21,12 +21,6 @@ const Buffer<Vec4>& Film::operator[](const std::string& layer) const {
   return const_cast<Film&>(*this)[layer];
 }
 
-std::vector<std::string> Film::layers() const {
-  std::vector<std::string> names;
-  for (const auto& [name, buffer] : layers_) names.push_back(name);
-  return names;
-}
-
 void Film::clear() {
   for (auto& [name, buffer] : layers_) buffer.fill(Vec4{});
 }

@@ -23,7 +23,6 @@ class Film {
   // The layer's sums (the kernels' argument); throws Error for a layer the film lacks.
   Buffer<Vec4>& operator[](const std::string& layer);
   const Buffer<Vec4>& operator[](const std::string& layer) const;
-  std::vector<std::string> layers() const;
 
   void clear();
   // The layer's mean over `samples` passes, interleaved RGB.
