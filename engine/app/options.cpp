@@ -74,7 +74,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--device", o.device,
                  "OpenCL device: index, cpu, gpu, or part of its name (default: $GDR_DEVICE, else first GPU, else CPU)");
   app.add_option("--stats", o.stats_path, "Write timers and counters to this JSON file");
-  app.add_option("--threads", o.threads, "Host and CPU-device threads (default: the usable CPUs)")
+  app.add_option("--threads", o.threads, "Host and CPU-device threads (default and maximum: the usable CPUs)")
       ->check(kFinitePositive);
   app.add_flag("--strict", o.strict, "Unsupported scene features are errors instead of warnings");
   app.add_option("--filter", o.filter, "Pixel filter: box | tent | gaussian (default: the scene's)")

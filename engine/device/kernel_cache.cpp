@@ -4,7 +4,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <iterator>
+#include <string_view>
 
 #include "image/atomic_file.h"
 #include "util/hash.h"
@@ -36,11 +38,44 @@ KernelCache::KernelCache(const DeviceInfo& device, const std::string& options, c
   path_ = (std::filesystem::path(dir) / name).string();
 }
 
+// An entry: kMagic, the binary's size (uint64), its FNV-1a hash (uint64), then the binary. A
+// truncated, corrupt or foreign entry is never handed to the driver (a bad binary can crash it).
+namespace {
+constexpr char kMagic[8] = {'G', 'D', 'R', 'K', 'C', 'v', '1', '\n'};
+constexpr size_t kHeader = 24;
+
+void put_u64(std::string& out, uint64_t v) {
+  for (int i = 0; i < 8; ++i) out += static_cast<char>((v >> (8 * i)) & 0xFF);
+}
+uint64_t get_u64(const std::string& in, size_t at) {
+  uint64_t v = 0;
+  for (int i = 0; i < 8; ++i) v |= static_cast<uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  return v;
+}
+}  // namespace
+
 std::vector<unsigned char> KernelCache::load() const {
   if (path_.empty()) return {};
-  std::ifstream in(path_, std::ios::binary);
-  if (!in) return {};
-  return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), {});
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path_, ec)) return {};
+  uint64_t file_size = fs::file_size(path_, ec);
+  bool valid = !ec && file_size >= kHeader && file_size <= (1ull << 31);
+  std::string bytes;
+  if (valid) {
+    std::ifstream in(path_, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+    valid = bytes.size() == file_size && std::equal(kMagic, kMagic + 8, bytes.begin()) &&
+            get_u64(bytes, 8) == bytes.size() - kHeader &&
+            get_u64(bytes, 16) == fnv1a64(std::string_view(bytes).substr(kHeader));
+  }
+  if (!valid) {
+    // Removed so that the rebuilt program replaces it; a failure to remove is harmless (store()
+    // renames over it).
+    fs::remove(path_, ec);
+    return {};
+  }
+  return std::vector<unsigned char>(bytes.begin() + kHeader, bytes.end());
 }
 
 void KernelCache::store(cl_program program) const {
@@ -51,12 +86,20 @@ void KernelCache::store(cl_program program) const {
   std::vector<unsigned char> binary(size);
   unsigned char* ptr = binary.data();
   if (clGetProgramInfo(program, CL_PROGRAM_BINARIES, sizeof(ptr), &ptr, nullptr) != CL_SUCCESS) return;
+  store_binary(binary);
+}
+
+void KernelCache::store_binary(const std::vector<unsigned char>& binary) const {
+  if (path_.empty() || binary.empty()) return;
+  std::string entry(kMagic, kMagic + 8);
+  std::string_view data(reinterpret_cast<const char*>(binary.data()), binary.size());
+  put_u64(entry, data.size());
+  put_u64(entry, fnv1a64(data));
+  entry.append(data);
   try {
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(path_).parent_path(), ec);
-    write_file_atomically(path_, [&](const std::string& tmp) {
-      write_text_file(tmp, std::string(binary.begin(), binary.end()));
-    });
+    write_file_atomically(path_, [&](const std::string& tmp) { write_text_file(tmp, entry); });
   } catch (...) {
     // An unwritable cache only costs a rebuild next time.
   }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "util/cpus.h"
+#include "util/log.h"
 
 namespace gdr {
 namespace {
@@ -45,6 +46,12 @@ void configure_runtime(int threads) {
   std::call_once(once, [threads] {
     int cpus = usable_cpu_count();
     g_threads = threads > 0 ? threads : cpus;
+    // More threads than CPUs only oversubscribe them, and a count the system cannot create makes
+    // the OpenCL driver abort: at most the CPUs this process may use.
+    if (g_threads > cpus) {
+      log::warn("--threads ", threads, " is more than the ", cpus, " CPUs this process may use: using ", cpus);
+      g_threads = cpus;
+    }
     set_env_default("POCL_CACHE_DIR", default_pocl_cache_dir());
     // PoCL's pthread device reads one or the other depending on its version.
     set_env_default("POCL_MAX_PTHREAD_COUNT", std::to_string(g_threads));

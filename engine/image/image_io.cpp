@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <new>
 
 #include "image/atomic_file.h"
 #include "util/error.h"
+#include "util/input_limits.h"
 #include "util/log.h"
 
 namespace gdr {
@@ -83,12 +85,29 @@ void write_image(const std::string& path, const Image& image) {
 }
 
 Image read_image(const std::string& path) {
+  // A device or directory is refused, and the header's size checked against the file and the
+  // input limit, before the pixels are allocated.
+  uint64_t file_size = checked_input_size(path, "image");
   auto in = OIIO::ImageInput::open(path);
-  if (!in) throw Error(path + ": cannot read image: " + OIIO::geterror());
+  if (!in) throw InputError(path, 0, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
-  Image image(spec.width, spec.height, spec.channelnames);
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw InputError(path, 0, "empty image");
+  double pixel_count = static_cast<double>(spec.width) * spec.height * std::max(spec.depth, 1);
+  std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
+  check_declared_size(path, pixel_count * spec.nchannels * spec.format.size(), file_size, kMaxImageCompression,
+                      "the header claims " + size + " pixels of " + std::to_string(spec.nchannels) + " channels");
+  double needed = pixel_count * spec.nchannels * sizeof(float);
+  check_input_allocation(path, needed >= 1.8e19 ? UINT64_MAX : static_cast<uint64_t>(needed),
+                         "the image (" + size + " pixels)");
+  Image image;
+  try {
+    image = Image(spec.width, spec.height, spec.channelnames);
+  } catch (const std::bad_alloc&) {
+    throw InputError(path, 0, "out of memory allocating " + format_bytes(static_cast<uint64_t>(needed)) +
+                                  " for the image (" + size + " pixels)");
+  }
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-    throw Error(path + ": cannot read image: " + in->geterror());
+    throw InputError(path, 0, "cannot read image: " + in->geterror());
   }
   in->close();
   return image;

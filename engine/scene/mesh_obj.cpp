@@ -4,12 +4,12 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <unordered_map>
 
 #include "scene/mesh.h"
 #include "util/error.h"
+#include "util/input_limits.h"
 
 namespace gdr {
 namespace {
@@ -28,6 +28,26 @@ void check_vertex_lines(const std::string& text, const std::string& path) {
       if (end == s) throw InputError(path, number, "vertex line with fewer than 3 numbers");
       if (!std::isfinite(v)) throw InputError(path, number, "vertex coordinate is not finite");
       s = end;
+    }
+  }
+}
+
+// tinyobjloader stores each polygon's vertex count in one byte, so a face of 256 or more vertices
+// would be cut without a word: such faces are refused here, with their line numbers.
+constexpr long kMaxFaceVertices = 255;
+
+void check_face_lines(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.size() < 2 || line[0] != 'f' || (line[1] != ' ' && line[1] != '\t')) continue;
+    std::istringstream tokens(line.substr(1));
+    std::string tok;
+    long count = 0;
+    while (tokens >> tok) ++count;
+    if (count > kMaxFaceVertices) {
+      throw InputError(path, number, "a face with " + std::to_string(count) + " vertices (at most " +
+                                         std::to_string(kMaxFaceVertices) + " are supported: triangulate it)");
     }
   }
 }
@@ -67,12 +87,9 @@ struct CornerEq {
 }  // namespace
 
 MeshData read_obj(const std::string& path, bool flip_tex_coords) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path, 0, "cannot read the OBJ file");
-  std::ostringstream ss;
-  ss << file.rdbuf();
-  std::string text = ss.str();
+  std::string text = read_input_file(path, "OBJ mesh");
   check_vertex_lines(text, path);
+  check_face_lines(text, path);
 
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;

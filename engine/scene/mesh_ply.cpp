@@ -9,6 +9,7 @@
 
 #include "scene/mesh.h"
 #include "util/error.h"
+#include "util/input_limits.h"
 
 namespace gdr {
 namespace {
@@ -118,6 +119,7 @@ int uv_slot(const std::string& n) {
 }  // namespace
 
 MeshData read_ply(const std::string& path) {
+  uint64_t file_size = checked_input_size(path, "PLY mesh");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot read the PLY file");
   std::string text;
@@ -172,6 +174,25 @@ MeshData read_ply(const std::string& path) {
     }
   }
   if (format < 0) throw InputError(path, line, "PLY header without a format line");
+  // The counts the header declares, checked against the body's real size (each item takes at
+  // least its scalar sizes in binary, a digit and a separator per value in ASCII) and the input
+  // limit before anything is allocated.
+  {
+    std::streamoff header = in.tellg();
+    uint64_t body_size = header > 0 && static_cast<uint64_t>(header) <= file_size ? file_size - header : 0;
+    double least = 0, memory = 0;
+    for (const Element& e : elements) {
+      double item = 0;
+      for (const Property& p : e.props) item += format == 0 ? 2.0 : static_cast<double>(type_size(p.list ? p.count_type : p.type));
+      least += item * static_cast<double>(e.count);
+      if (e.name == "vertex") memory += 8.0 * sizeof(float) * static_cast<double>(e.count);
+      if (e.name == "face") memory += 3.0 * sizeof(int) * static_cast<double>(e.count);
+    }
+    std::string claim = "the header claims";
+    for (const Element& e : elements) claim += " " + std::to_string(e.count) + " " + e.name + (elements.size() > 1 && &e != &elements.back() ? "," : "");
+    check_declared_size(path, least, body_size, 1.0, claim);
+    check_input_allocation(path, memory >= 1.8e19 ? UINT64_MAX : static_cast<uint64_t>(memory), claim + ", which");
+  }
 
   MeshData mesh;
   size_t vertex_count = 0;

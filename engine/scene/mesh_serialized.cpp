@@ -6,12 +6,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <new>
 
 #include "scene/mesh.h"
 #include "util/error.h"
+#include "util/input_limits.h"
 
 namespace gdr {
 namespace {
@@ -27,42 +28,58 @@ T load_le(const unsigned char* p) {
   return v;
 }
 
-// Inflates the zlib stream that starts at `data` (no size is stored: read until its end).
-std::vector<unsigned char> inflate_stream(const unsigned char* data, size_t size, const std::string& path) {
-  z_stream zs{};
-  if (inflateInit(&zs) != Z_OK) throw InputError(path, 0, "zlib initialisation failed");
-  zs.next_in = const_cast<unsigned char*>(data);
-  zs.avail_in = static_cast<uInt>(std::min<size_t>(size, 0xFFFFFFFFu));
-  std::vector<unsigned char> out;
-  int ret = Z_OK;
-  while (ret != Z_STREAM_END) {
-    size_t old = out.size();
-    out.resize(old + (1 << 20));
-    zs.next_out = out.data() + old;
-    zs.avail_out = 1 << 20;
-    ret = inflate(&zs, Z_NO_FLUSH);
-    out.resize(old + (1 << 20) - zs.avail_out);
-    if (ret != Z_OK && ret != Z_STREAM_END) {
-      inflateEnd(&zs);
-      throw InputError(path, 0, std::string("corrupt compressed mesh data (zlib: ") + (zs.msg ? zs.msg : "error") + ")");
-    }
-    if (ret == Z_OK && zs.avail_in == 0 && zs.avail_out != 0) {
-      inflateEnd(&zs);
-      throw InputError(path, 0, "truncated compressed mesh data");
-    }
+// Inflates the zlib stream that starts at `data` on demand: no size is stored, so the counts are
+// read first and only the bytes they call for are inflated (a stream that inflates to gigabytes
+// costs no more than its counts allow).
+class Inflater {
+ public:
+  Inflater(const unsigned char* data, size_t size, const std::string& path) : path_(path) {
+    if (inflateInit(&zs_) != Z_OK) throw InputError(path, 0, "zlib initialisation failed");
+    zs_.next_in = const_cast<unsigned char*>(data);
+    zs_.avail_in = static_cast<uInt>(std::min<size_t>(size, 0xFFFFFFFFu));
   }
-  inflateEnd(&zs);
-  return out;
-}
+  ~Inflater() { inflateEnd(&zs_); }
+  Inflater(const Inflater&) = delete;
+  Inflater& operator=(const Inflater&) = delete;
+
+  const std::vector<unsigned char>& bytes() const { return out_; }
+
+  // Inflates until at least `n` bytes are out (fewer only when the stream ends first).
+  void fill(size_t n) {
+    if (n <= out_.size() || ended_) return;
+    size_t old = out_.size();
+    try {
+      out_.resize(n);
+    } catch (const std::bad_alloc&) {
+      throw InputError(path_, 0, "out of memory inflating " + format_bytes(n) + " of mesh data");
+    }
+    zs_.next_out = out_.data() + old;
+    zs_.avail_out = static_cast<uInt>(std::min<size_t>(n - old, 0xFFFFFFFFu));
+    while (zs_.avail_out > 0) {
+      int ret = inflate(&zs_, Z_NO_FLUSH);
+      if (ret == Z_STREAM_END) {
+        ended_ = true;
+        break;
+      }
+      if (ret != Z_OK) {
+        throw InputError(path_, 0, std::string("corrupt compressed mesh data (zlib: ") + (zs_.msg ? zs_.msg : "error") + ")");
+      }
+      if (zs_.avail_in == 0 && zs_.avail_out > 0) throw InputError(path_, 0, "truncated compressed mesh data");
+    }
+    out_.resize(n - zs_.avail_out);
+  }
+
+ private:
+  z_stream zs_{};
+  std::vector<unsigned char> out_;
+  bool ended_ = false;
+  std::string path_;
+};
 
 }  // namespace
 
 MeshData read_serialized(const std::string& path, int shape_index) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot read the .serialized file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string bytes = ss.str();
+  const std::string bytes = read_input_file(path, ".serialized mesh");
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   size_t size = bytes.size();
   if (size < 8 || load_le<uint16_t>(data) != kMagic) throw InputError(path, 0, "not a Mitsuba .serialized mesh file");
@@ -83,25 +100,43 @@ MeshData read_serialized(const std::string& path, int shape_index) {
   if (offset > size - 4 || load_le<uint16_t>(data + offset) != kMagic) {
     throw InputError(path, 0, "bad offset for mesh " + std::to_string(shape_index));
   }
-  std::vector<unsigned char> raw = inflate_stream(data + offset + 4, size - offset - 4, path);
+  size_t compressed = size - offset - 4;
+  Inflater z(data + offset + 4, compressed, path);
 
   size_t pos = 0;
   auto need = [&](size_t n) {
-    if (pos + n > raw.size()) throw InputError(path, 0, "truncated mesh " + std::to_string(shape_index));
+    z.fill(pos + n);
+    if (pos + n > z.bytes().size()) throw InputError(path, 0, "truncated mesh " + std::to_string(shape_index));
   };
   need(4);
-  uint32_t flags = load_le<uint32_t>(raw.data());
+  uint32_t flags = load_le<uint32_t>(z.bytes().data());
   pos = 4;
   if (version == 4) {
-    while (pos < raw.size() && raw[pos] != 0) ++pos;
-    need(1);
+    // The mesh's name, up to its NUL.
+    for (;; ++pos) {
+      if (pos > 4 + 65536) throw InputError(path, 0, "mesh " + std::to_string(shape_index) + ": name too long");
+      need(1);
+      if (z.bytes()[pos] == 0) break;
+    }
     ++pos;
   }
   need(16);
-  uint64_t nv = load_le<uint64_t>(raw.data() + pos);
-  uint64_t nt = load_le<uint64_t>(raw.data() + pos + 8);
+  uint64_t nv = load_le<uint64_t>(z.bytes().data() + pos);
+  uint64_t nt = load_le<uint64_t>(z.bytes().data() + pos + 8);
   pos += 16;
   size_t scalar = (flags & kDouble) ? 8 : 4;
+  if (nv > (1ull << 31) || nt > (1ull << 31)) throw InputError(path, 0, "mesh too large");
+  // What the counts call for, checked before it is inflated: against what the compressed stream
+  // can hold (deflate compresses at most about 1032:1) and against the input limit.
+  uint64_t per_vertex = 3 + ((flags & kHasNormals) ? 3 : 0) + ((flags & kHasUvs) ? 2 : 0) + ((flags & kHasColors) ? 3 : 0);
+  uint64_t payload = nv * per_vertex * scalar + 12 * nt;
+  std::string claim = "mesh " + std::to_string(shape_index) + " claims " + std::to_string(nv) + " vertices and " +
+                      std::to_string(nt) + " triangles";
+  check_declared_size(path, static_cast<double>(payload), compressed, 1040.0, claim);
+  // The inflated data, and the floats and indices it becomes.
+  check_input_allocation(path, payload + nv * per_vertex * 4 + 12 * nt, claim + ", which");
+  z.fill(pos + payload);
+  const std::vector<unsigned char>& raw = z.bytes();
   auto read_scalars = [&](size_t n, std::vector<float>& dst) {
     need(n * scalar);
     dst.resize(n);
@@ -117,7 +152,6 @@ MeshData read_serialized(const std::string& path, int shape_index) {
       }
     }
   };
-  if (nv > (1ull << 31) || nt > (1ull << 31)) throw InputError(path, 0, "mesh too large");
   MeshData mesh;
   read_scalars(3 * nv, mesh.positions);
   if (flags & kHasNormals) read_scalars(3 * nv, mesh.normals);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/input_limits.h"
 
 namespace fs = std::filesystem;
 
@@ -96,27 +97,30 @@ struct SourceFile {
   }
 };
 
+constexpr int kMaxXmlDepth = 256;
+
 class Builder {
  public:
   Builder(XmlDocument& doc, const std::map<std::string, std::string>& defines)
       : doc_(doc), params_(defines) {}
 
   // Parses `path` and appends its elements to `parent` (the root <scene>'s children are spliced).
-  void load(const std::string& path, XmlNode& parent, const XmlNode* included_from, bool top) {
+  // `depth`: how deep `parent` lies in the document (an included file continues its includer's).
+  void load(const std::string& path, XmlNode& parent, const XmlNode* included_from, bool top, int depth = 0) {
     if (std::find(stack_.begin(), stack_.end(), path) != stack_.end()) {
       throw InputError(included_from->file, included_from->line, "include cycle: '" + path + "'");
     }
     if (stack_.size() > 32) throw InputError(path, 0, "includes nested too deeply");
     auto src = std::make_unique<SourceFile>();
     src->path = path;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      if (included_from) throw InputError(included_from->file, included_from->line, "cannot read '" + path + "'");
-      throw InputError(path, 0, "cannot read the scene file");
+    // Through the input checks: a device (<include filename="/dev/zero"/>), a pipe or a file over
+    // the input limit is refused before it is read.
+    try {
+      src->text = read_input_file(path, included_from ? "included file" : "scene file");
+    } catch (const InputError& e) {
+      if (included_from) throw InputError(included_from->file, included_from->line, std::string("<include>: ") + e.what());
+      throw;
     }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    src->text = ss.str();
     src->line_starts.push_back(0);
     for (size_t i = 0; i < src->text.size(); ++i)
       if (src->text[i] == '\n') src->line_starts.push_back(i + 1);
@@ -147,10 +151,10 @@ class Builder {
         parent.line = file.line_of(root.offset_debug());
         parent.version_major = version;
       }
-      for (pugi::xml_node child : root.children()) visit(child, parent, file, version);
+      for (pugi::xml_node child : root.children()) visit(child, parent, file, version, depth + 1);
     } else {
       if (top) throw InputError(path, file.line_of(root.offset_debug()), "the root element must be <scene>");
-      visit(root, parent, file, version);
+      visit(root, parent, file, version, depth + 1);
     }
     stack_.pop_back();
   }
@@ -182,9 +186,14 @@ class Builder {
     return out;
   }
 
-  void visit(pugi::xml_node xml, XmlNode& parent, const SourceFile& file, int version) {
+  void visit(pugi::xml_node xml, XmlNode& parent, const SourceFile& file, int version, int depth) {
     if (xml.type() != pugi::node_element) return;
     int line = file.line_of(xml.offset_debug());
+    // The builder recurses once per level (and so does everything that walks the tree): a bound
+    // keeps a deeply nested file from overflowing the stack. Real scenes nest fewer than 20 deep.
+    if (depth > kMaxXmlDepth) {
+      throw InputError(file.path, line, "elements nested more than " + std::to_string(kMaxXmlDepth) + " deep");
+    }
     std::string tag = xml.name();
     if (tag == "default") {
       std::string name = xml.attribute("name").value();
@@ -210,7 +219,7 @@ class Builder {
       const std::string* filename = node->attr("filename");
       if (!filename) throw InputError(file.path, line, "<include> without a filename");
       std::string resolved = doc_.resolve(*filename, *node);
-      load(resolved, parent, node.get(), false);
+      load(resolved, parent, node.get(), false, depth - 1);
       return;
     }
     if (tag == "path") {
@@ -221,7 +230,7 @@ class Builder {
       doc_.search_paths.insert(doc_.search_paths.begin(), p.lexically_normal().string());
       return;
     }
-    for (pugi::xml_node child : xml.children()) visit(child, *node, file, version);
+    for (pugi::xml_node child : xml.children()) visit(child, *node, file, version, depth + 1);
     if (const std::string* id = node->attr("id"); id && tag != "ref") {
       auto [it, fresh] = doc_.ids.emplace(*id, node.get());
       if (!fresh) {

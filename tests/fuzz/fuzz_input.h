@@ -1,7 +1,8 @@
 // One fuzz input for the scene loader, shared by the libFuzzer target (fuzz_scene.cpp) and the
 // regression test that replays saved crash inputs with the normal build. The first byte picks
-// what the rest is: 'x' a scene (XML), 'o' an OBJ, 'p' a PLY, 's' a Mitsuba .serialized mesh
-// (any other byte: its value mod 4 in that order). The rest is written into a scratch folder
+// what the rest is: 'x' a scene (XML), 'o' an OBJ, 'p' a PLY, 's' a Mitsuba .serialized mesh, 'i'
+// an image used as a bitmap texture (written as texture.ppm; OpenImageIO falls back to the other
+// formats by content) (any other byte: its value mod 4 in the order x, o, p, s). The rest is written into a scratch folder
 // that also holds valid meshes and the project's scene fragments (so a fuzzed scene can include
 // and reference them), and a fixed scene loads the fuzzed mesh.
 #pragma once
@@ -55,7 +56,7 @@ inline const char* valid_ply() {
 inline void load_fuzz_input(const uint8_t* data, size_t size) {
   const std::filesystem::path& dir = scratch_dir();
   char kind = size > 0 ? static_cast<char>(data[0]) : 'x';
-  if (kind != 'x' && kind != 'o' && kind != 'p' && kind != 's') kind = "xops"[static_cast<uint8_t>(kind) % 4];
+  if (kind != 'x' && kind != 'o' && kind != 'p' && kind != 's' && kind != 'i') kind = "xops"[static_cast<uint8_t>(kind) % 4];
   const uint8_t* body = size > 0 ? data + 1 : data;
   size_t body_size = size > 0 ? size - 1 : 0;
 
@@ -67,9 +68,15 @@ inline void load_fuzz_input(const uint8_t* data, size_t size) {
     case 'x': write_file(scene, body, body_size); break;
     case 'o': write_file(dir / "mesh.obj", body, body_size); break;
     case 'p': write_file(dir / "mesh.ply", body, body_size); type = "ply"; break;
+    case 'i': write_file(dir / "texture.ppm", body, body_size); break;
     default: write_file(dir / "mesh.serialized", body, body_size); type = "serialized"; break;
   }
-  if (kind != 'x') {
+  if (kind == 'i') {
+    write_file(scene, "<scene version=\"3.0.0\">\n  <bsdf type=\"diffuse\" id=\"m\">\n    <texture type=\"bitmap\" "
+                      "name=\"reflectance\">\n      <string name=\"filename\" value=\"texture.ppm\"/>\n    </texture>\n"
+                      "  </bsdf>\n  <shape type=\"obj\">\n    <string name=\"filename\" value=\"mesh.obj\"/>\n"
+                      "    <ref id=\"m\"/>\n  </shape>\n</scene>\n");
+  } else if (kind != 'x') {
     std::string t(type);
     write_file(scene, "<scene version=\"3.0.0\">\n  <shape type=\"" + t + "\">\n    <string name=\"filename\" value=\"mesh." +
                           t + "\"/>\n  </shape>\n</scene>\n");

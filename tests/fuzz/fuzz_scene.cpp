@@ -1,8 +1,10 @@
-// libFuzzer target: the Mitsuba XML loader and the OBJ, PLY and .serialized mesh readers. Bad
+// libFuzzer target: the Mitsuba XML loader, the OBJ, PLY and .serialized mesh readers and the
+// texture reader. Bad
 // input must end in gdr::InputError; any other exception, a crash, a leak or an out-of-memory is a
 // finding. Build and run with scripts/fuzz.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 
 #include "fuzz/fuzz_input.h"
 #include "util/error.h"
@@ -10,6 +12,9 @@
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   gdr::log::set_level(gdr::log::Level::Quiet);  // loader warnings would flood the fuzzer's output
+  // Well under the fuzzer's -rss_limit_mb: a header that claims more than this must be refused,
+  // not allocated.
+  setenv("GDR_MAX_INPUT_BYTES", "256M", 0);
   return 0;
 }
 
