@@ -109,6 +109,12 @@ class Builder {
     if (stack_.size() > 32) throw InputError(path, 0, "includes nested too deeply");
     auto src = std::make_unique<SourceFile>();
     src->path = path;
+    if (std::error_code ec; fs::is_directory(path, ec)) {
+      if (included_from) {
+        throw InputError(included_from->file, included_from->line, "'" + path + "' is a folder, not a file");
+      }
+      throw InputError(path, 0, "a folder, not a scene file");
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
       if (included_from) throw InputError(included_from->file, included_from->line, "cannot read '" + path + "'");
