@@ -33,12 +33,22 @@ long name_max(const std::string& dir) {
   return n > 0 ? n : 255;
 }
 
-// Follows symbolic links from `path` to the file they end at (which need not exist).
-std::string follow_links(const OutputTarget& t) {
+bool under(const std::string& path, const char* prefix) { return path.rfind(prefix, 0) == 0; }
+
+// Follows symbolic links from `path` to the file they end at (which need not exist). A link
+// through /proc or /dev/fd (/dev/stdout is one) stands for an open descriptor, not a name: such
+// a target is written in place through the path as given (`magic`).
+std::string follow_links(const OutputTarget& t, bool& magic) {
   std::string p = t.path;
+  magic = false;
   for (int hops = 0; hops < 40; ++hops) {
     struct stat st {};
     if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    std::string abs = fs::absolute(p).lexically_normal().string();
+    if (under(abs, "/proc/") || under(abs, "/dev/fd/") || abs == "/dev/stdout" || abs == "/dev/stderr") {
+      magic = true;
+      return t.path;
+    }
     std::vector<char> buf(PATH_MAX + 1);
     ssize_t n = ::readlink(p.c_str(), buf.data(), buf.size() - 1);
     if (n < 0) fail_errno(t, errno);
@@ -145,7 +155,15 @@ OutputTarget check_output(const std::string& path, bool allow_stdout) {
     t.in_place = t.to_stdout = t.exists = true;
     return t;
   }
-  t.file = follow_links(t);
+  bool magic = false;
+  t.file = follow_links(t, magic);
+  if (magic) {
+    struct stat st {};
+    if (::stat(t.file.c_str(), &st) != 0) fail_errno(t, errno);
+    if (S_ISDIR(st.st_mode)) fail(t, "it is a folder, not a file");
+    t.in_place = t.exists = true;
+    return t;
+  }
   std::string name = fs::path(t.file).filename().string();
   if (name.empty() || name == "." || name == "..") fail(t, "it names a folder, not a file");
   std::string dir = folder_of(t.file);
