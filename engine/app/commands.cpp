@@ -1,12 +1,16 @@
 #include "app/commands.h"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
+#include "app/output_paths.h"
 #include "app/reconstruct_command.h"
 #include "app/render_command.h"
 #include "device/context.h"
 #include "device/devices.h"
+#include "device/runtime_env.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "image/image_metrics.h"
 #include "integrators/registry.h"
@@ -19,7 +23,11 @@ namespace gdr {
 
 int list_devices_command() {
   std::vector<DeviceInfo> devices = list_devices();
-  if (devices.empty()) throw Error("no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
+  if (devices.empty()) {
+    std::string problem = opencl_environment_problem();
+    if (!problem.empty()) throw Error("no OpenCL platform started: " + problem);
+    throw Error("no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
+  }
   std::fputs(format_device_list(devices).c_str(), stdout);
   return 0;
 }
@@ -40,6 +48,16 @@ int info_command(const Options& o) {
 }
 
 int compare_command(const Options& o) {
+  if (!o.error_image.empty()) {
+    // Standard output carries the JSON: `-` is refused. The image is a PNG.
+    check_outputs({{"--error-image", o.error_image, false}});
+    OutputTarget t = check_output(o.error_image);
+    std::string ext = std::filesystem::path(o.error_image).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (!t.in_place && ext != ".png") {
+      throw Error("--error-image " + o.error_image + ": the error image is a PNG: name it with .png");
+    }
+  }
   Image a = read_image(o.compare[0]), b = read_image(o.compare[1]);
   ImageError e = compare_images(a, b);
   nlohmann::json j = {{"relmse", e.rel_mse}, {"mse", e.mse}, {"mape", e.mape}, {"values", e.values},
@@ -62,6 +80,13 @@ int run_command(const Options& options) {
     std::string out = options.output.empty()
                           ? std::filesystem::path(options.reconstruct).stem().string() + "-recon.exr"
                           : options.output;
+    // Outputs are checked before the reconstruction runs.
+    ImageOutputs images = image_outputs(out);
+    std::vector<PlannedOutput> planned;
+    if (!images.exr.empty()) planned.push_back({"-o", images.exr, true});
+    if (!images.png.empty()) planned.push_back({"-o", images.png, true});
+    if (!options.stats_path.empty()) planned.push_back({"--stats", options.stats_path, true});
+    check_outputs(planned);
     std::optional<ReconSettings> recon = recon_from_params(IntegratorParams(options.integrator_params));
     if (!recon) throw Error("--reconstruct needs a reconstruction: --recon l1 or l2, not none");
     int code = reconstruct_command(options.reconstruct, out, *recon, ctx, &stats);

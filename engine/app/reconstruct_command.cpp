@@ -1,7 +1,8 @@
 #include "app/reconstruct_command.h"
 
-#include <algorithm>
-#include <filesystem>
+#include "app/output_paths.h"
+#include "image/atomic_file.h"
+
 
 #include "image/image_io.h"
 #include "render/gradient_images.h"
@@ -16,13 +17,11 @@ int reconstruct_command(const std::string& in_exr, const std::string& out_path,
   Image out = gradient_image(ctx, gradient_layers_from(in, in_exr), settings, stats);
   log::info("reconstructed ", in_exr, " (", settings.norm == ReconNorm::L1 ? "L1" : "L2", ", alpha ",
             settings.alpha, ")");
-  std::filesystem::path exr_path(out_path), png_path(out_path);
-  std::string ext = exr_path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  if (ext == ".png") exr_path.replace_extension(".exr");
-  png_path.replace_extension(".png");
-  write_exr(exr_path.string(), out);
-  write_png(png_path.string(), out);
+  ImageOutputs images = image_outputs(out_path);
+  OutputSet outputs;
+  if (!images.exr.empty()) outputs.add(images.exr, encode_exr(out, images.exr), true);
+  if (!images.png.empty()) outputs.add(images.png, encode_png(out, 0.0f, images.png), true);
+  outputs.commit();
   return 0;
 }
 

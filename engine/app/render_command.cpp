@@ -3,7 +3,9 @@
 #include <filesystem>
 
 #include "accel/embree_scene.h"
+#include "app/output_paths.h"
 #include "device/context.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "integrators/registry.h"
 #include "render/device_scene.h"
@@ -74,6 +76,15 @@ LoadOptions load_options(const Options& o) {
 int render_command(const Options& o) {
   Stats stats;
   ScopedTimer total(&stats, "total");
+  // Every output is checked before the scene is loaded: a long render must not find at its end
+  // that it cannot write.
+  std::string out = o.output.empty() ? default_output(o.scene) : o.output;
+  ImageOutputs images = image_outputs(out);
+  std::vector<PlannedOutput> planned;
+  if (!images.exr.empty()) planned.push_back({"-o", images.exr, true});
+  if (!images.png.empty()) planned.push_back({"-o", images.png, true});
+  if (!o.stats_path.empty()) planned.push_back({"--stats", o.stats_path, true});
+  check_outputs(planned);
   IntegratorParams params(o.integrator_params);
   Scene scene = [&] {
     ScopedTimer t(&stats, "scene/load");
@@ -109,22 +120,24 @@ int render_command(const Options& o) {
   RenderResult result = integrator->render(settings);
   if (render_interrupted()) log::warn("interrupted: writing the ", result.samples, " spp rendered so far");
 
-  std::string out = o.output.empty() ? default_output(o.scene) : o.output;
-  std::filesystem::path exr = std::filesystem::path(out).replace_extension(".exr");
-  std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
-  {
-    ScopedTimer t(&stats, "image/write");
-    write_exr(exr.string(), result.image);
-    write_png(png.string(), result.image);
-  }
   double seconds = result.seconds;
   stats.set("render/seconds", seconds);
   stats.set("render/samples_per_second", seconds > 0 ? result.samples / seconds : 0.0);
-  log::info("rendered ", result.samples, " spp in ", seconds, " s; wrote ", exr.string(), " and ", png.string());
+  // The images and the stats are written as one set: temporaries first, then renamed together.
+  OutputSet outputs;
+  {
+    ScopedTimer t(&stats, "image/write");
+    if (!images.exr.empty()) outputs.add(images.exr, encode_exr(result.image, images.exr), true);
+    if (!images.png.empty()) outputs.add(images.png, encode_png(result.image, 0.0f, images.png), true);
+  }
   if (!o.stats_path.empty()) {
     stats.set("total_seconds", total.elapsed());
-    stats.write_json(o.stats_path);
+    std::string text = stats.to_json().dump(2) + "\n";
+    outputs.add(o.stats_path, std::vector<unsigned char>(text.begin(), text.end()), true);
   }
+  outputs.commit();
+  std::string wrote = images.exr.empty() ? images.png : images.png.empty() ? images.exr : images.exr + " and " + images.png;
+  log::info("rendered ", result.samples, " spp in ", seconds, " s; wrote ", wrote);
   return 0;
 }
 

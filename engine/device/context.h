@@ -169,6 +169,12 @@ class Kernel {
   std::string name_;
 };
 
+// Checks a buffer of `bytes` against the device's largest allocation (CL_DEVICE_MAX_MEM_ALLOC_SIZE)
+// before it is asked for; after a failed clCreateBuffer (`err`), says what was asked for and
+// what the device allows instead of the bare error code. Throws DeviceError.
+void check_buffer_size(const Context& context, size_t count, size_t element_size);
+[[noreturn]] void throw_buffer_error(const Context& context, size_t bytes, cl_int err);
+
 // A device buffer of `count` elements of plain type T.
 template <class T>
 class Buffer {
@@ -177,9 +183,10 @@ class Buffer {
   Buffer(Context& context, size_t count, cl_mem_flags flags = CL_MEM_READ_WRITE)
       : context_(&context), count_(count) {
     cl_int err = CL_SUCCESS;
+    check_buffer_size(context, count, sizeof(T));
     // A zero-sized buffer is invalid in OpenCL; keep one element so kernels always get a handle.
     mem_ = clCreateBuffer(context.handle(), flags, sizeof(T) * (count ? count : 1), nullptr, &err);
-    cl_check(err, "clCreateBuffer");
+    if (err != CL_SUCCESS) throw_buffer_error(context, sizeof(T) * (count ? count : 1), err);
   }
   Buffer(Context& context, const std::vector<T>& data, cl_mem_flags flags = CL_MEM_READ_WRITE)
       : Buffer(context, data.size(), flags) {

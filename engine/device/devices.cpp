@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "device/cl.h"
+#include "device/runtime_env.h"
 
 namespace gdr {
 namespace {
@@ -79,6 +80,7 @@ std::vector<DeviceInfo> list_devices() {
                                                         : "other";
       clGetDeviceInfo(d, CL_DEVICE_MAX_COMPUTE_UNITS, sizeof(info.compute_units), &info.compute_units, nullptr);
       clGetDeviceInfo(d, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof(info.global_memory), &info.global_memory, nullptr);
+      clGetDeviceInfo(d, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof(info.max_alloc), &info.max_alloc, nullptr);
       out.push_back(info);
     }
   }
@@ -101,7 +103,11 @@ DeviceInfo select_device(const std::string& selector_in) {
     if (const char* env = std::getenv("GDR_DEVICE")) selector = env;
   }
   std::vector<DeviceInfo> devices = list_devices();
-  if (devices.empty()) throw no_match("no OpenCL platform found", devices);
+  if (devices.empty()) {
+    std::string problem = opencl_environment_problem();
+    if (!problem.empty()) throw DeviceError("no OpenCL platform started: " + problem);
+    throw no_match("no OpenCL platform found", devices);
+  }
 
   if (selector.empty()) {
     for (const char* kind : {"gpu", "cpu"}) {

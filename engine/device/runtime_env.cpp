@@ -1,10 +1,14 @@
 #include "device/runtime_env.h"
 
+#include <sys/stat.h>
 #include <tbb/global_control.h>
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -63,5 +67,26 @@ void configure_runtime(int threads) {
 }
 
 int runtime_threads() { return g_threads > 0 ? g_threads : usable_cpu_count(); }
+
+std::string opencl_environment_problem() {
+  const char* dir = std::getenv("POCL_CACHE_DIR");
+  if (!dir) return {};
+  std::string d = dir;
+  std::error_code ec;
+  std::filesystem::create_directories(d, ec);  // PoCL needs it to exist
+  struct stat st {};
+  if (::stat(d.c_str(), &st) != 0) {
+    return "POCL_CACHE_DIR=" + d + " cannot be created (" + (ec ? ec.message() : std::string(std::strerror(errno))) +
+           "); PoCL needs a writable cache folder (unset POCL_CACHE_DIR to use the default)";
+  }
+  if (!S_ISDIR(st.st_mode)) {
+    return "POCL_CACHE_DIR=" + d + " is not a folder; PoCL needs a writable cache folder (unset POCL_CACHE_DIR to use the default)";
+  }
+  if (::access(d.c_str(), W_OK | X_OK) != 0) {
+    return "POCL_CACHE_DIR=" + d + " is not writable (" + std::strerror(errno) +
+           "); PoCL needs a writable cache folder (unset POCL_CACHE_DIR to use the default)";
+  }
+  return {};
+}
 
 }  // namespace gdr

@@ -1,5 +1,6 @@
 #include "image/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -21,14 +22,21 @@ float srgb_encode(float linear) {
   return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
-void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* data) {
-  write_file_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw Error("cannot write " + path + ": " + OIIO::geterror());
-    if (!out->open(tmp, spec) || !out->write_image(type, data) || !out->close()) {
-      throw Error("cannot write " + path + ": " + out->geterror());
-    }
-  });
+// The encoded file, made in memory: the bytes are then written by write_output_file, which
+// names the path and the system's reason when that fails.
+std::vector<unsigned char> encode_with_oiio(const std::string& format, const std::string& path,
+                                            const OIIO::ImageSpec& spec_in, OIIO::TypeDesc type, const void* data) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput proxy(bytes);
+  OIIO::ImageSpec spec = spec_in;
+  OIIO::Filesystem::IOProxy* p = &proxy;
+  spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
+  auto out = OIIO::ImageOutput::create(format);
+  if (!out) throw Error("cannot write " + path + ": " + OIIO::geterror());
+  if (!out->open("gdrender." + format, spec) || !out->write_image(type, data) || !out->close()) {
+    throw Error("cannot write " + path + ": " + out->geterror());
+  }
+  return bytes;
 }
 
 Image checked_copy(const Image& image, const std::string& path) {
@@ -52,16 +60,16 @@ size_t sanitize_nonfinite(Image& image) {
   return n;
 }
 
-void write_exr(const std::string& path, const Image& image) {
+std::vector<unsigned char> encode_exr(const Image& image, const std::string& path) {
   Image clean = checked_copy(image, path);
   OIIO::ImageSpec spec(clean.width, clean.height, static_cast<int>(clean.channel_count()), OIIO::TypeDesc::FLOAT);
   spec.channelnames = clean.channels;
   spec.attribute("compression", "zip");
   spec.attribute("Software", "gdrender " GDR_VERSION);
-  write_with_oiio(path, spec, OIIO::TypeDesc::FLOAT, clean.pixels.data());
+  return encode_with_oiio("exr", path, spec, OIIO::TypeDesc::FLOAT, clean.pixels.data());
 }
 
-void write_png(const std::string& path, const Image& image, float exposure_stops) {
+std::vector<unsigned char> encode_png(const Image& image, float exposure_stops, const std::string& path) {
   std::vector<float> rgb = image.rgb_layer("");
   float scale = std::exp2(exposure_stops);
   std::vector<uint8_t> bytes(rgb.size());
@@ -71,7 +79,13 @@ void write_png(const std::string& path, const Image& image, float exposure_stops
   }
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");
-  write_with_oiio(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+  return encode_with_oiio("png", path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+}
+
+void write_exr(const std::string& path, const Image& image) { write_output_file(path, encode_exr(image, path)); }
+
+void write_png(const std::string& path, const Image& image, float exposure_stops) {
+  write_output_file(path, encode_png(image, exposure_stops, path));
 }
 
 void write_image(const std::string& path, const Image& image) {

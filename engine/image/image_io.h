@@ -1,7 +1,9 @@
-// Reading and writing images through OpenImageIO. Every write is atomic (temporary name, then
-// rename), and non-finite values are replaced by 0 and reported before anything is written.
+// Reading and writing images through OpenImageIO. Images are encoded in memory and written by
+// write_output_file (image/atomic_file.h: a temporary name, then rename; devices and pipes in
+// place), and non-finite values are replaced by 0 and reported before anything is written.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
@@ -11,7 +13,10 @@ namespace gdr {
 void write_exr(const std::string& path, const Image& image);
 // The R,G,B channels, exposure-scaled, clamped and sRGB-encoded to 8 bits.
 void write_png(const std::string& path, const Image& image, float exposure_stops = 0.0f);
-// Chooses by extension (.exr, .png, anything else OIIO writes as 8-bit sRGB).
+// The file's bytes (`path` only names it in messages).
+std::vector<unsigned char> encode_exr(const Image& image, const std::string& path);
+std::vector<unsigned char> encode_png(const Image& image, float exposure_stops, const std::string& path);
+// Chooses by extension: .exr, else PNG.
 void write_image(const std::string& path, const Image& image);
 Image read_image(const std::string& path);
 

@@ -2,28 +2,15 @@
 
 #include <unistd.h>
 
-#include <atomic>
-#include <chrono>
-#include <csignal>
-#include <cstdio>
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "util/interrupt.h"
+#include "util/log.h"
 
 namespace gdr {
 namespace {
-
-std::atomic<bool> g_interrupted{false};
-
-void on_sigint(int) { g_interrupted = true; }
-
-// Installs the SIGINT handler for its lifetime; a second Ctrl-C then ends the process as usual.
-class SigintGuard {
- public:
-  SigintGuard() { previous_ = std::signal(SIGINT, on_sigint); }
-  ~SigintGuard() { std::signal(SIGINT, previous_); }
-
- private:
-  void (*previous_)(int);
-};
 
 void print_progress(int done, int total, double elapsed, const std::optional<double>& budget) {
   double fraction = total > 0 ? double(done) / total : 0.0;
@@ -36,18 +23,19 @@ void print_progress(int done, int total, double elapsed, const std::optional<dou
 
 }  // namespace
 
-bool render_interrupted() { return g_interrupted; }
+bool render_interrupted() { return interrupt_requested(); }
 
 int run_progressive(const RenderSettings& settings, const std::function<void(int)>& pass) {
-  g_interrupted = false;
-  SigintGuard guard;
+  // From here on there is a render to save: the first interrupt asks the loop to stop.
+  defer_interrupts();
+  log::verbose("rendering: Ctrl-C or SIGTERM stops after the pass in flight and writes the image; a second one stops at once");
   bool show = settings.progress && isatty(STDERR_FILENO);
   auto start = std::chrono::steady_clock::now();
   int total = settings.spp;
   int done = 0;
   for (;;) {
     if (total > 0 && done >= total) break;
-    if (g_interrupted) break;
+    if (interrupt_requested()) break;
     pass(done);
     ++done;
     double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

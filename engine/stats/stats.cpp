@@ -59,7 +59,7 @@ nlohmann::json Stats::to_json() const {
 
 void Stats::write_json(const std::string& path) const {
   std::string text = to_json().dump(2) + "\n";
-  write_file_atomically(path, [&](const std::string& tmp) { write_text_file(tmp, text); });
+  write_output_file(path, std::vector<unsigned char>(text.begin(), text.end()), /*allow_stdout=*/true);
 }
 
 }  // namespace gdr

@@ -22,7 +22,8 @@ class Stats {
   double seconds(const std::string& key) const;
   uint64_t count(const std::string& key) const;
   nlohmann::json to_json() const;
-  // Writes the JSON atomically (temporary file, then rename).
+  // Writes the JSON as image/atomic_file.h writes outputs (temporary file, then rename; a device
+  // or pipe in place; `-` is standard output).
   void write_json(const std::string& path) const;
 
  private:

@@ -46,7 +46,7 @@ uint64_t checked_input_size(const std::string& path, const std::string& what) {
   if (::stat(path.c_str(), &st) != 0) {
     throw InputError(path, 0, "cannot read the " + what + ": " + std::strerror(errno));
   }
-  if (S_ISDIR(st.st_mode)) throw InputError(path, 0, "the " + what + " is a directory, not a file");
+  if (S_ISDIR(st.st_mode)) throw InputError(path, 0, "the " + what + " is a folder, not a file");
   if (!S_ISREG(st.st_mode)) {
     throw InputError(path, 0, "the " + what + " is not a regular file (a device, pipe or socket)");
   }
