@@ -81,12 +81,7 @@ int run_command(const Options& options) {
                           ? std::filesystem::path(options.reconstruct).stem().string() + "-recon.exr"
                           : options.output;
     // Outputs are checked before the reconstruction runs.
-    ImageOutputs images = image_outputs(out);
-    std::vector<PlannedOutput> planned;
-    if (!images.exr.empty()) planned.push_back({"-o", images.exr, true});
-    if (!images.png.empty()) planned.push_back({"-o", images.png, true});
-    if (!options.stats_path.empty()) planned.push_back({"--stats", options.stats_path, true});
-    check_outputs(planned);
+    checked_render_outputs(out, options.stats_path);
     std::optional<ReconSettings> recon = recon_from_params(IntegratorParams(options.integrator_params));
     if (!recon) throw Error("--reconstruct needs a reconstruction: --recon l1 or l2, not none");
     int code = reconstruct_command(options.reconstruct, out, *recon, ctx, &stats);

@@ -73,4 +73,14 @@ void check_outputs(const std::vector<PlannedOutput>& outputs) {
   }
 }
 
+ImageOutputs checked_render_outputs(const std::string& out, const std::string& stats_path) {
+  ImageOutputs images = image_outputs(out);
+  std::vector<PlannedOutput> planned;
+  if (!images.exr.empty()) planned.push_back({"-o", images.exr, true});
+  if (!images.png.empty()) planned.push_back({"-o", images.png, true});
+  if (!stats_path.empty()) planned.push_back({"--stats", stats_path, true});
+  check_outputs(planned);
+  return images;
+}
+
 }  // namespace gdr

@@ -32,4 +32,7 @@ struct PlannedOutput {
 };
 void check_outputs(const std::vector<PlannedOutput>& outputs);
 
+// The images of `-o out` and the stats file (if any), checked together with check_outputs.
+ImageOutputs checked_render_outputs(const std::string& out, const std::string& stats_path);
+
 }  // namespace gdr

@@ -79,12 +79,7 @@ int render_command(const Options& o) {
   // Every output is checked before the scene is loaded: a long render must not find at its end
   // that it cannot write.
   std::string out = o.output.empty() ? default_output(o.scene) : o.output;
-  ImageOutputs images = image_outputs(out);
-  std::vector<PlannedOutput> planned;
-  if (!images.exr.empty()) planned.push_back({"-o", images.exr, true});
-  if (!images.png.empty()) planned.push_back({"-o", images.png, true});
-  if (!o.stats_path.empty()) planned.push_back({"--stats", o.stats_path, true});
-  check_outputs(planned);
+  ImageOutputs images = checked_render_outputs(out, o.stats_path);
   IntegratorParams params(o.integrator_params);
   Scene scene = [&] {
     ScopedTimer t(&stats, "scene/load");

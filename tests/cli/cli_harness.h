@@ -40,10 +40,9 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-// Runs `gdrender ARGS` with `dir` as the working folder. ARGS is shell syntax. A run that hangs
-// is stopped after 60 s (exit code 124).
-inline CliResult run_gdrender(const std::string& args, const TempDir& dir) {
-  std::string cmd = "cd '" + dir.path().string() + "' && timeout 60 '" + GDR_GDRENDER_EXE + "' " + args + " 2>&1";
+// Runs the shell command line `cmd` and returns its exit code and output (stdout; redirect
+// stderr into it where needed).
+inline CliResult run_shell(const std::string& cmd) {
   CliResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -53,6 +52,12 @@ inline CliResult run_gdrender(const std::string& args, const TempDir& dir) {
   int status = pclose(pipe);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+// Runs `gdrender ARGS` with `dir` as the working folder. ARGS is shell syntax. A run that hangs
+// is stopped after 60 s (exit code 124).
+inline CliResult run_gdrender(const std::string& args, const TempDir& dir) {
+  return run_shell("cd '" + dir.path().string() + "' && timeout 60 '" + GDR_GDRENDER_EXE + "' " + args + " 2>&1");
 }
 
 // Files in `dir` whose name ends with `suffix`.

@@ -29,17 +29,8 @@ namespace {
 // `limit`, stopped after `seconds`.
 CliResult run_with(const std::string& args, const TempDir& dir, const std::string& env, const std::string& limit,
                    int seconds) {
-  std::string cmd = "cd '" + dir.path().string() + "' && " + limit + "env " + env + " timeout " +
-                    std::to_string(seconds) + " '" + GDR_GDRENDER_EXE + "' " + args + " 2>&1";
-  CliResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof(buf), pipe)) > 0) r.output.append(buf, n);
-  int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return run_shell("cd '" + dir.path().string() + "' && " + limit + "env " + env + " timeout " +
+                   std::to_string(seconds) + " '" + GDR_GDRENDER_EXE + "' " + args + " 2>&1");
 }
 
 // For runs that fail while loading: the address space capped at 8 GiB.

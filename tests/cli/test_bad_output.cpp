@@ -61,16 +61,7 @@ void expect_error(const CliResult& r, const std::vector<std::string>& needles) {
 
 // Runs a shell command line in `dir` (for environment variables and redirections).
 CliResult run_sh(const std::string& script, const TempDir& dir) {
-  std::string cmd = "cd '" + dir.path().string() + "' && " + script;
-  CliResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof(buf), pipe)) > 0) r.output.append(buf, n);
-  int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return run_shell("cd '" + dir.path().string() + "' && " + script);
 }
 
 const std::string kExe = std::string("'") + GDR_GDRENDER_EXE + "'";
