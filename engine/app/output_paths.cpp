@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "image/image_io.h"
 #include "util/error.h"
 
 namespace gdr {
@@ -81,6 +82,11 @@ ImageOutputs checked_render_outputs(const std::string& out, const std::string& s
   if (!stats_path.empty()) planned.push_back({"--stats", stats_path, true});
   check_outputs(planned);
   return images;
+}
+
+void add_image_outputs(OutputSet& set, const ImageOutputs& images, const Image& image) {
+  if (!images.exr.empty()) set.add(images.exr, encode_exr(image, images.exr), true);
+  if (!images.png.empty()) set.add(images.png, encode_png(image, 0.0f, images.png), true);
 }
 
 }  // namespace gdr

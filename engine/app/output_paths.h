@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "image/atomic_file.h"
+#include "image/image.h"
 
 namespace gdr {
 
@@ -31,6 +32,9 @@ struct PlannedOutput {
   bool allow_stdout = false;
 };
 void check_outputs(const std::vector<PlannedOutput>& outputs);
+
+// Adds the images `image` is written as (encoded EXR and PNG) to `set`.
+void add_image_outputs(OutputSet& set, const ImageOutputs& images, const Image& image);
 
 // The images of `-o out` and the stats file (if any), checked together with check_outputs.
 ImageOutputs checked_render_outputs(const std::string& out, const std::string& stats_path);

@@ -19,8 +19,7 @@ int reconstruct_command(const std::string& in_exr, const std::string& out_path,
             settings.alpha, ")");
   ImageOutputs images = image_outputs(out_path);
   OutputSet outputs;
-  if (!images.exr.empty()) outputs.add(images.exr, encode_exr(out, images.exr), true);
-  if (!images.png.empty()) outputs.add(images.png, encode_png(out, 0.0f, images.png), true);
+  add_image_outputs(outputs, images, out);
   outputs.commit();
   return 0;
 }

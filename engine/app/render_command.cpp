@@ -122,13 +122,11 @@ int render_command(const Options& o) {
   OutputSet outputs;
   {
     ScopedTimer t(&stats, "image/write");
-    if (!images.exr.empty()) outputs.add(images.exr, encode_exr(result.image, images.exr), true);
-    if (!images.png.empty()) outputs.add(images.png, encode_png(result.image, 0.0f, images.png), true);
+    add_image_outputs(outputs, images, result.image);
   }
   if (!o.stats_path.empty()) {
     stats.set("total_seconds", total.elapsed());
-    std::string text = stats.to_json().dump(2) + "\n";
-    outputs.add(o.stats_path, std::vector<unsigned char>(text.begin(), text.end()), true);
+    outputs.add(o.stats_path, stats.json_bytes(), true);
   }
   outputs.commit();
   std::string wrote = images.exr.empty() ? images.png : images.png.empty() ? images.exr : images.exr + " and " + images.png;

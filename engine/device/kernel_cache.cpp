@@ -99,7 +99,7 @@ void KernelCache::store_binary(const std::vector<unsigned char>& binary) const {
   try {
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(path_).parent_path(), ec);
-    write_file_atomically(path_, [&](const std::string& tmp) { write_text_file(tmp, entry); });
+    write_output_file(path_, std::vector<unsigned char>(entry.begin(), entry.end()));
   } catch (...) {
     // An unwritable cache only costs a rebuild next time.
   }

@@ -8,7 +8,6 @@
 #include <climits>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 
 #include "util/error.h"
@@ -235,34 +234,6 @@ void write_output_file(const std::string& path, const std::vector<unsigned char>
   OutputSet set;
   set.add(path, bytes, allow_stdout);
   set.commit();
-}
-
-void write_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-  OutputTarget t = check_output(path);
-  std::string tmp = t.in_place ? temporary_name((fs::temp_directory_path() / fs::path(t.file).filename()).string())
-                               : temporary_name(t.file);
-  register_temporary(tmp);
-  try {
-    write(tmp);
-    if (t.in_place) {
-      std::ifstream in(tmp, std::ios::binary);
-      std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), {});
-      write_in_place(t, bytes);
-      discard_temporary(tmp);
-    } else if (std::error_code ec = commit_temporary(tmp, t.file)) {
-      fail(t, ec.message());
-    }
-  } catch (...) {
-    discard_temporary(tmp);
-    throw;
-  }
-}
-
-void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw Error("cannot write " + path);
 }
 
 }  // namespace gdr

@@ -6,7 +6,6 @@
 // exists and is not a regular file (a folder, a block device, a socket) is refused, never
 // replaced. Every failure names the path and the reason ("No space left on device").
 #pragma once
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,13 +58,5 @@ class OutputSet {
 // One output (see OutputSet).
 void write_output_file(const std::string& path, const std::vector<unsigned char>& bytes,
                        bool allow_stdout = false);
-
-// Calls `write(tmp_path)` (for writers that want a file name); on success renames tmp_path to the
-// target, on any exception removes it and rethrows. The temporary name keeps the extension. A
-// target written in place gets the bytes `write` left in a private temporary elsewhere.
-void write_file_atomically(const std::string& path,
-                           const std::function<void(const std::string& tmp_path)>& write);
-
-void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace gdr

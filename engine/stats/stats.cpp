@@ -57,9 +57,11 @@ nlohmann::json Stats::to_json() const {
   return root;
 }
 
-void Stats::write_json(const std::string& path) const {
+std::vector<unsigned char> Stats::json_bytes() const {
   std::string text = to_json().dump(2) + "\n";
-  write_output_file(path, std::vector<unsigned char>(text.begin(), text.end()), /*allow_stdout=*/true);
+  return std::vector<unsigned char>(text.begin(), text.end());
 }
+
+void Stats::write_json(const std::string& path) const { write_output_file(path, json_bytes(), /*allow_stdout=*/true); }
 
 }  // namespace gdr

@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@ class Stats {
   // Writes the JSON as image/atomic_file.h writes outputs (temporary file, then rename; a device
   // or pipe in place; `-` is standard output).
   void write_json(const std::string& path) const;
+  std::vector<unsigned char> json_bytes() const;  // what write_json writes
 
  private:
   struct Timer {
