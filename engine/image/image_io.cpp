@@ -98,7 +98,7 @@ void write_image(const std::string& path, const Image& image) {
   }
 }
 
-Image read_image(const std::string& path) {
+Image read_image(const std::string& path, bool* integer_format, size_t extra_bytes_per_pixel) {
   // A device or directory is refused, and the header's size checked against the file and the
   // input limit, before the pixels are allocated.
   uint64_t file_size = checked_input_size(path, "image");
@@ -110,7 +110,7 @@ Image read_image(const std::string& path) {
   std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
   check_declared_size(path, pixel_count * spec.nchannels * spec.format.size(), file_size, kMaxImageCompression,
                       "the header claims " + size + " pixels of " + std::to_string(spec.nchannels) + " channels");
-  double needed = pixel_count * spec.nchannels * sizeof(float);
+  double needed = pixel_count * (spec.nchannels * sizeof(float) + extra_bytes_per_pixel);
   check_input_allocation(path, needed >= 1.8e19 ? UINT64_MAX : static_cast<uint64_t>(needed),
                          "the image (" + size + " pixels)");
   Image image;
@@ -122,6 +122,9 @@ Image read_image(const std::string& path) {
   }
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
     throw InputError(path, 0, "cannot read image: " + in->geterror());
+  }
+  if (integer_format) {
+    *integer_format = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
   }
   in->close();
   return image;

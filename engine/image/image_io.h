@@ -18,7 +18,11 @@ std::vector<unsigned char> encode_exr(const Image& image, const std::string& pat
 std::vector<unsigned char> encode_png(const Image& image, float exposure_stops, const std::string& path);
 // Chooses by extension: .exr, else PNG.
 void write_image(const std::string& path, const Image& image);
-Image read_image(const std::string& path);
+// Reads an image file through the input checks: a regular file whose header's size fits the
+// file and the input limit (with `extra_bytes_per_pixel` more that the caller will allocate for
+// its own copy), else InputError naming `path`. `integer_format`: set when the file holds 8- or
+// 16-bit integers (sRGB-encoded colours, unless the scene says they are raw data).
+Image read_image(const std::string& path, bool* integer_format = nullptr, size_t extra_bytes_per_pixel = 0);
 
 // Replaces NaN/Inf by 0; returns how many values were replaced.
 size_t sanitize_nonfinite(Image& image);

@@ -1,14 +1,9 @@
 // Textures: `bitmap` (through OpenImageIO, stored as linear RGB texels) and `checkerboard`.
-#include <OpenImageIO/imageio.h>
-
-#include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <new>
 
+#include "image/image_io.h"
 #include "scene/load_context.h"
 #include "util/error.h"
-#include "util/input_limits.h"
 
 namespace gdr {
 namespace {
@@ -32,46 +27,18 @@ void read_uv_transform(const Props& p, GdrTexture& t) {
 }  // namespace
 
 int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear) {
-  // A device or a directory is refused before OpenImageIO opens it; the header's size is checked
-  // against the file and the input limit before the pixels are allocated.
-  uint64_t file_size = 0;
+  bool integer_format = false;
+  Image image;
   try {
-    file_size = checked_input_size(path, "texture");
+    image = read_image(path, &integer_format, sizeof(ctx.scene.texels[0]));
   } catch (const InputError& e) {
     throw InputError(from.file, from.line, e.what());
   }
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw InputError(from.file, from.line, "cannot read image '" + path + "': " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  int w = spec.width, h = spec.height, nc = spec.nchannels;
-  if (w <= 0 || h <= 0 || nc <= 0) throw InputError(from.file, from.line, "empty image '" + path + "'");
-  double pixel_count = static_cast<double>(w) * h * std::max(spec.depth, 1);
-  std::string claim = "the header claims " + std::to_string(w) + "x" + std::to_string(h) + " pixels of " +
-                      std::to_string(nc) + " channels";
-  std::vector<float> pixels;
-  try {
-    check_declared_size(path, pixel_count * nc * spec.format.size(), file_size, kMaxImageCompression, claim);
-    // The float pixels read here and the texels they become.
-    double needed = pixel_count * (nc * sizeof(float) + sizeof(ctx.scene.texels[0]));
-    check_input_allocation(path, needed >= 1.8e19 ? UINT64_MAX : static_cast<uint64_t>(needed),
-                           "the texture (" + std::to_string(w) + "x" + std::to_string(h) + " pixels)");
-    try {
-      pixels.resize(static_cast<size_t>(w) * h * nc);
-      ctx.scene.texels.reserve(ctx.scene.texels.size() + static_cast<size_t>(w) * h);
-    } catch (const std::bad_alloc&) {
-      throw InputError(path, 0, "out of memory allocating " + format_bytes(static_cast<uint64_t>(needed)) +
-                                    " for the texture (" + std::to_string(w) + "x" + std::to_string(h) + " pixels)");
-    }
-  } catch (const InputError& e) {
-    throw InputError(from.file, from.line, e.what());
-  }
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, pixels.data())) {
-    throw InputError(from.file, from.line, "cannot read image '" + path + "': " + in->geterror());
-  }
+  const int w = image.width, h = image.height, nc = static_cast<int>(image.channel_count());
+  const std::vector<float>& pixels = image.pixels;
   // 8- and 16-bit images hold sRGB-encoded values unless the scene says they are raw data.
-  bool decode = !raw && (spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                         spec.format.basetype == OIIO::TypeDesc::UINT16);
-  in->close();
+  bool decode = !raw && integer_format;
+  ctx.scene.texels.reserve(ctx.scene.texels.size() + static_cast<size_t>(w) * h);
 
   GdrTexture t{};
   t.type = TEXTURE_BITMAP;
