@@ -1,12 +1,12 @@
 #include "device/context.h"
 
-#include <cstdio>
 #include <limits>
 
 #include "device/kernel_cache.h"
 #include "device/kernel_sources.h"
 #include "device/runtime_env.h"
 #include "stats/process_clock.h"
+#include "util/input_limits.h"
 #include "util/log.h"
 
 namespace gdr {
@@ -194,18 +194,6 @@ void Kernel::launch(cl_uint dims, const size_t* global, const size_t* local, siz
   cl_check(err, ("running kernel " + name_).c_str());
 }
 
-namespace {
-
-std::string human_bytes(double bytes) {
-  const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
-  int u = 0;
-  while (bytes >= 1024 && u < 6) bytes /= 1024, ++u;
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), u == 0 ? "%.0f %s" : "%.1f %s", bytes, units[u]);
-  return buf;
-}
-
-}  // namespace
 
 void check_buffer_size(const Context& context, size_t count, size_t element_size) {
   const DeviceInfo& d = context.device();
@@ -215,9 +203,9 @@ void check_buffer_size(const Context& context, size_t count, size_t element_size
   }
   size_t bytes = count * element_size;
   if (d.max_alloc > 0 && bytes > d.max_alloc) {
-    throw DeviceError("a device buffer of " + human_bytes(double(bytes)) + " (" + std::to_string(bytes) +
-                      " bytes) is more than " + d.name + " allows in one allocation: " + human_bytes(double(d.max_alloc)) +
-                      " (CL_DEVICE_MAX_MEM_ALLOC_SIZE; device memory " + human_bytes(double(d.global_memory)) +
+    throw DeviceError("a device buffer of " + format_bytes(bytes) + " (" + std::to_string(bytes) +
+                      " bytes) is more than " + d.name + " allows in one allocation: " + format_bytes(d.max_alloc) +
+                      " (CL_DEVICE_MAX_MEM_ALLOC_SIZE; device memory " + format_bytes(d.global_memory) +
                       "); render a smaller image");
   }
 }
@@ -225,9 +213,9 @@ void check_buffer_size(const Context& context, size_t count, size_t element_size
 void throw_buffer_error(const Context& context, size_t bytes, cl_int err) {
   const DeviceInfo& d = context.device();
   throw DeviceError("clCreateBuffer failed: " + std::string(cl_error_name(err)) + " for a buffer of " +
-                    human_bytes(double(bytes)) + " (" + std::to_string(bytes) + " bytes; " + d.name +
-                    " allows " + human_bytes(double(d.max_alloc)) + " in one allocation, device memory " +
-                    human_bytes(double(d.global_memory)) + ")");
+                    format_bytes(bytes) + " (" + std::to_string(bytes) + " bytes; " + d.name +
+                    " allows " + format_bytes(d.max_alloc) + " in one allocation, device memory " +
+                    format_bytes(d.global_memory) + ")");
 }
 
 }  // namespace gdr

@@ -16,7 +16,7 @@ constexpr uint64_t kDefaultMaxInputBytes = 4ull << 30;
 // The limit in bytes (GDR_MAX_INPUT_BYTES, else the default). A malformed value is an Error.
 uint64_t max_input_bytes();
 
-// "4.0 GiB", "92 bytes": a size for messages.
+// "4.0 GiB", "92 bytes": a size for messages (also the device's buffer limits).
 std::string format_bytes(uint64_t bytes);
 
 // The size of `path` in bytes. InputError(path, 0, ...) when it does not exist, or is not a
