@@ -38,6 +38,29 @@ CLI::Validator registered_integrator() {
       "INTEGRATOR");
 }
 
+// --resolution: "W" or "WxH", each 1..65536 (the film sizes a scene file may give).
+bool parse_resolution(const std::string& s, int* width, int* height) {
+  auto number = [](const std::string& t, int* v) {
+    if (t.empty() || t.size() > 5 || t.find_first_not_of("0123456789") != std::string::npos) return false;
+    *v = std::stoi(t);
+    return *v >= 1 && *v <= 65536;
+  };
+  size_t x = s.find('x');
+  *height = 0;
+  if (x == std::string::npos) return number(s, width);
+  return number(s.substr(0, x), width) && number(s.substr(x + 1), height);
+}
+
+CLI::Validator resolution_check() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        int w, h;
+        if (parse_resolution(s, &w, &h)) return {};
+        return "Value " + s + " is not a film size WxH or W (1 to 65536 pixels)";
+      },
+      "WxH");
+}
+
 // An integrator parameter on the command line: kept under its registry name when given.
 struct ParamOption {
   CLI::Option* option;
@@ -81,6 +104,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(CLI::IsMember({"box", "tent", "gaussian"}));
   app.add_option("--max-depth", o.max_depth, "Maximum path length (default: the scene's, else 16)")
       ->check(CLI::Range(1, 1024));
+  std::string resolution;
+  app.add_option("--resolution", resolution,
+                 "Film size WxH, or W with the height from the scene's aspect ratio (default: the scene's)")
+      ->check(resolution_check());
 
   // Integrator parameters (the registry says which integrator reads which).
   std::list<ParamOption> params;  // CLI11 keeps references to the values: no reallocation
@@ -129,6 +156,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     }
     o.defines[d.substr(0, eq)] = d.substr(eq + 1);
   }
+  if (!resolution.empty()) parse_resolution(resolution, &o.width, &o.height);
   if (!o.list_devices && !o.list_integrators && o.info_scene.empty() && o.reconstruct.empty() && o.scene.empty() &&
       o.compare.empty()) {
     std::cerr << "gdrender: nothing to do: give a scene to render, --info SCENE, --reconstruct IN.exr, "

@@ -30,6 +30,7 @@ struct Options {
   bool strict = false;
   std::string filter;  // overrides the scene's reconstruction filter
   int max_depth = -1;  // overrides the scene's integrator max_depth (-1: keep)
+  int width = 0, height = 0;  // --resolution WxH or W (height from the film's aspect); 0: keep
 
   // Integrator parameters given on the command line (--strategy, --aux, --shift,
   // --shift-threshold, --recon, --recon-solver, --alpha), by their registry names (strategy,

@@ -49,9 +49,12 @@ std::string default_output(const std::string& scene_path) {
   return std::filesystem::path(scene_path).stem().string() + ".exr";
 }
 
-nlohmann::json settings_json(const Options& o, const RenderSettings& s, const IntegratorEntry& integrator) {
+nlohmann::json settings_json(const Options& o, const RenderSettings& s, const IntegratorEntry& integrator,
+                             const GdrCamera& camera) {
   nlohmann::json j;
   j["integrator"] = integrator.name;
+  j["width"] = camera.width;
+  j["height"] = camera.height;
   j["seed"] = s.seed;
   j["spp_requested"] = s.spp;
   if (s.time_budget) j["time_budget"] = *s.time_budget;
@@ -69,6 +72,8 @@ LoadOptions load_options(const Options& o) {
   LoadOptions load;
   load.defines = o.defines;
   load.strict = o.strict;
+  load.width = o.width;
+  load.height = o.height;
   load.glossy_threshold = IntegratorParams(o.integrator_params).non_negative("shift_threshold", GDR_GLOSSY_THRESHOLD);
   return load;
 }
@@ -98,7 +103,7 @@ int render_command(const Options& o) {
   settings.spp = o.spp ? *o.spp : (o.time_budget ? 0 : scene.spp);
   settings.max_depth = o.max_depth > 0 ? o.max_depth : scene.max_depth;
   settings.progress = !o.quiet;
-  stats.set("settings", settings_json(o, settings, entry));
+  stats.set("settings", settings_json(o, settings, entry, scene.camera));
 
   Context ctx(select_device(o.device), &stats);
   log::info("device: ", ctx.device().name, " (", ctx.device().platform_name, ")");

@@ -13,6 +13,10 @@ struct LoadOptions {
   std::map<std::string, std::string> defines;  // override the scene's <default> values
   bool strict = false;                         // unsupported features are errors, not warnings
   float glossy_threshold = GDR_GLOSSY_THRESHOLD;  // alpha below which a rough surface is near-delta
+  // Film size replacing the scene's (0: keep); a height of 0 with a width keeps the film's
+  // aspect ratio. Applied where the film is read, so the field of view follows as if the file
+  // said it.
+  int width = 0, height = 0;
 };
 
 // Throws gdr::InputError (file, line, problem) for malformed XML, missing files, bad values,

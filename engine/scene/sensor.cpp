@@ -1,5 +1,6 @@
 // The perspective sensor with its film, reconstruction filter and sampler -> GdrCamera.
 // Camera frame (Mitsuba's): looks along local +z, +x is left, +y is up.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -84,6 +85,15 @@ void read_filter(LoadContext& ctx, const XmlNode& film, GdrCamera& cam) {
   cam.filter_radius = static_cast<float>(radius);
 }
 
+// The command line's film size replaces the file's; a width alone keeps the file's aspect ratio.
+void apply_resolution(const LoadOptions& o, GdrCamera& cam) {
+  if (o.width <= 0) return;
+  int height = o.height > 0 ? o.height
+                            : std::max(1, static_cast<int>(std::lround(double(o.width) * cam.height / cam.width)));
+  cam.width = o.width;
+  cam.height = height;
+}
+
 }  // namespace
 
 void load_sensor(LoadContext& ctx, const XmlNode& node) {
@@ -120,6 +130,7 @@ void load_sensor(LoadContext& ctx, const XmlNode& node) {
     cam.filter = FILTER_GAUSSIAN;
     cam.filter_radius = 2.0f;
   }
+  apply_resolution(ctx.options, cam);
   std::vector<const XmlNode*> samplers = p.nested("sampler");
   if (!samplers.empty()) {
     Props sampler = ctx.props(*samplers.front());
@@ -157,6 +168,7 @@ void default_camera(LoadContext& ctx) {
   cam.height = 576;
   cam.filter = FILTER_GAUSSIAN;
   cam.filter_radius = 2.0f;
+  apply_resolution(ctx.options, cam);
   cam.near_clip = static_cast<float>(std::max(distance - 2 * radius, 1e-3 * distance));
   cam.far_clip = static_cast<float>(distance + 4 * radius);
   set_fov(cam, 45.0, "x", *ctx.doc.root);

@@ -115,6 +115,33 @@ TEST(Cli, ResolutionDefineSetsTheImageSize) {
   EXPECT_EQ(count_files(dir, ".png"), 1);
 }
 
+// --resolution replaces the film's size; a width alone keeps the film's aspect ratio (the
+// glossy plates' film is 384x256, the Cornell box's square).
+TEST(Cli, ResolutionOptionSetsTheImageSize) {
+  TempDir dir;
+  const std::string plates = "'" + source_scene("glossy-plates.xml") + "'";
+  CliResult r = run_gdrender(plates + " --resolution 30 --spp 1 --quiet -o wide.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  Image wide = read_image(dir.file("wide.exr"));
+  EXPECT_EQ(wide.width, 30);
+  EXPECT_EQ(wide.height, 20);
+  r = run_gdrender(kCornell + " --resolution 16x9 --spp 1 --quiet -o both.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  Image both = read_image(dir.file("both.exr"));
+  EXPECT_EQ(both.width, 16);
+  EXPECT_EQ(both.height, 9);
+  r = run_gdrender("--info " + kCornell + " --resolution 20x10", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("resolution: 20x10"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadResolutionIsRejected) {
+  TempDir dir;
+  for (const char* bad : {"0", "12x", "x12", "12x0", "-4", "100000", "3.5", "12X12"}) {
+    expect_failure(run_gdrender(kCornell + " --resolution " + bad + " --spp 1 -o out.exr", dir), "--resolution", dir);
+  }
+}
+
 // A parameter the scene does not have is not silently ignored: a warning names it and the
 // scene's parameters; with --strict it is an error.
 TEST(Cli, UnknownDefineIsReported) {
