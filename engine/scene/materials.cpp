@@ -106,8 +106,8 @@ void read_conductor(LoadContext& ctx, const Props& p, GdrMaterial& m) {
   const XmlNode& node = p.node();
   ComplexIor ior{};
   if (p.has("eta") || p.has("k")) {
-    Rgb eta = p.get_color("eta", Rgb(0.0f), SpectrumUse::Reflectance);
-    Rgb k = p.get_color("k", Rgb(1.0f), SpectrumUse::Reflectance);
+    Rgb eta = p.get_color("eta", Rgb(0.0f), SpectrumUse::Unbounded);
+    Rgb k = p.get_color("k", Rgb(1.0f), SpectrumUse::Unbounded);
     ior = {{eta.r, eta.g, eta.b}, {k.r, k.g, k.b}};
   } else {
     // Mitsuba 0.x defaulted to copper, Mitsuba 2/3 to the perfect mirror.

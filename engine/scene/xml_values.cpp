@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "scene/xml_spectrum.h"
 #include "util/error.h"
 
 namespace gdr {
@@ -14,48 +15,11 @@ namespace {
   throw InputError(node.file, node.line, problem);
 }
 
-std::string where_attr(const XmlNode& node, const std::string& attr) {
-  std::string s = "attribute '" + attr + "' of <" + node.tag;
-  if (const std::string* n = node.attr("name")) s += " name=\"" + *n + "\"";
-  return s + ">";
-}
-
-const std::string& required(const XmlNode& node, const std::string& attr) {
-  const std::string* v = node.attr(attr);
-  if (!v) bad(node, "<" + node.tag + "> needs a '" + attr + "' attribute");
-  return *v;
-}
-
-double to_number(const XmlNode& node, const std::string& attr, const std::string& text) {
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  double v = std::strtod(begin, &end);
-  while (end && *end && std::isspace(static_cast<unsigned char>(*end))) ++end;
-  if (end == begin || (end && *end) || text.empty()) {
-    bad(node, where_attr(node, attr) + ": '" + text + "' is not a number");
-  }
-  return v;
-}
-
 bool is_sep(char c) { return c == ',' || std::isspace(static_cast<unsigned char>(c)); }
-
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && is_sep(s[i])) ++i;
-    size_t j = i;
-    while (j < s.size() && !is_sep(s[j])) ++j;
-    if (j > i) out.push_back(s.substr(i, j - i));
-    i = j;
-  }
-  return out;
-}
 
 Vec3d attr_vec3(const XmlNode& node, const std::string& attr) {
   std::vector<double> v = parse_number_list(node, attr);
-  if (v.size() != 3) bad(node, where_attr(node, attr) + ": expected 3 numbers");
+  if (v.size() != 3) bad(node, describe_attr(node, attr) + ": expected 3 numbers");
   return {v[0], v[1], v[2]};
 }
 
@@ -64,7 +28,7 @@ Vec3d xyz_or_value(const XmlNode& node, double fallback, bool allow_single) {
   if (node.attr("value")) {
     std::vector<double> v = parse_number_list(node, "value");
     if (v.size() == 1 && allow_single) return {v[0], v[0], v[0]};
-    if (v.size() != 3) bad(node, where_attr(node, "value") + ": expected 3 numbers");
+    if (v.size() != 3) bad(node, describe_attr(node, "value") + ": expected 3 numbers");
     return {v[0], v[1], v[2]};
   }
   Vec3d r{fallback, fallback, fallback};
@@ -91,7 +55,7 @@ Mat4d transform_op(const XmlNode& op) {
     } else if (v.size() == 9) {
       for (int i = 0; i < 9; ++i) m.m[i / 3][i % 3] = v[i];
     } else {
-      bad(op, where_attr(op, "value") + ": expected 16 (or 9) numbers, got " + std::to_string(v.size()));
+      bad(op, describe_attr(op, "value") + ": expected 16 (or 9) numbers, got " + std::to_string(v.size()));
     }
     if (m.m[3][0] != 0 || m.m[3][1] != 0 || m.m[3][2] != 0 || m.m[3][3] != 1) {
       bad(op, "<matrix>: projective matrices are not supported (last row must be 0 0 0 1)");
@@ -109,65 +73,75 @@ Mat4d transform_op(const XmlNode& op) {
 
 }  // namespace
 
+std::string describe_attr(const XmlNode& node, const std::string& attr) {
+  std::string s = "attribute '" + attr + "' of <" + node.tag;
+  if (const std::string* n = node.attr("name")) s += " name=\"" + *n + "\"";
+  return s + ">";
+}
+
+const std::string& required_attr(const XmlNode& node, const std::string& attr) {
+  const std::string* v = node.attr(attr);
+  if (!v) bad(node, "<" + node.tag + "> needs a '" + attr + "' attribute");
+  return *v;
+}
+
+double parse_number_text(const XmlNode& node, const std::string& attr, const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(begin, &end);
+  while (end && *end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+  if (end == begin || (end && *end) || text.empty()) {
+    bad(node, describe_attr(node, attr) + ": '" + text + "' is not a number");
+  }
+  return v;
+}
+
+std::vector<std::string> split_number_list(const std::string& s) {
+  std::vector<std::string> out;
+  size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && is_sep(s[i])) ++i;
+    size_t j = i;
+    while (j < s.size() && !is_sep(s[j])) ++j;
+    if (j > i) out.push_back(s.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
 double parse_number(const XmlNode& node, const std::string& attr) {
-  return to_number(node, attr, required(node, attr));
+  return parse_number_text(node, attr, required_attr(node, attr));
 }
 
 std::vector<double> parse_number_list(const XmlNode& node, const std::string& attr) {
   std::vector<double> out;
-  for (const std::string& tok : split_list(required(node, attr))) out.push_back(to_number(node, attr, tok));
+  for (const std::string& tok : split_number_list(required_attr(node, attr))) {
+    out.push_back(parse_number_text(node, attr, tok));
+  }
   return out;
 }
 
 Vec3d parse_vec3(const XmlNode& node) { return xyz_or_value(node, 0.0, false); }
 
-Rgb parse_color(const XmlNode& node, SpectrumUse use) {
+Rgb parse_color(const XmlNode& node) {
   const std::string& t = node.tag;
   if (t == "float" || t == "integer") return Rgb(static_cast<float>(parse_number(node, "value")));
   if (t == "rgb" || t == "srgb") {
-    std::string text = required(node, "value");
+    std::string text = required_attr(node, "value");
     Rgb c;
     if (t == "srgb" && !text.empty() && text[0] == '#') {
-      if (text.size() != 7) bad(node, where_attr(node, "value") + ": expected #rrggbb");
+      if (text.size() != 7) bad(node, describe_attr(node, "value") + ": expected #rrggbb");
       unsigned long v = std::strtoul(text.c_str() + 1, nullptr, 16);
       c = Rgb(((v >> 16) & 255) / 255.0f, ((v >> 8) & 255) / 255.0f, (v & 255) / 255.0f);
     } else {
       std::vector<double> v = parse_number_list(node, "value");
       if (v.size() == 1) c = Rgb(static_cast<float>(v[0]));
       else if (v.size() == 3) c = Rgb(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-      else bad(node, where_attr(node, "value") + ": expected 1 or 3 numbers, got " + std::to_string(v.size()));
+      else bad(node, describe_attr(node, "value") + ": expected 1 or 3 numbers, got " + std::to_string(v.size()));
     }
     if (t == "srgb") c = Rgb(srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b));
     return c;
-  }
-  if (t == "spectrum") {
-    if (node.attr("filename")) bad(node, "<spectrum filename=...> (spectral data files) is not supported");
-    const std::string& text = required(node, "value");
-    if (text.find(':') == std::string::npos) {
-      std::vector<double> v = parse_number_list(node, "value");
-      if (v.size() != 1) bad(node, where_attr(node, "value") + ": expected one value or wavelength:value pairs");
-      return Rgb(static_cast<float>(v[0]));
-    }
-    std::vector<std::pair<double, double>> samples;
-    for (const std::string& tok : split_list(text)) {
-      size_t colon = tok.find(':');
-      if (colon == std::string::npos) bad(node, where_attr(node, "value") + ": '" + tok + "' is not wavelength:value");
-      double nm = to_number(node, "value", tok.substr(0, colon));
-      double v = to_number(node, "value", tok.substr(colon + 1));
-      if (!samples.empty() && nm <= samples.back().first) {
-        bad(node, where_attr(node, "value") + ": wavelengths must increase");
-      }
-      samples.emplace_back(nm, v);
-    }
-    return spectrum_to_rgb(samples, use);
-  }
-  if (t == "blackbody") {
-    std::string temp = required(node, "temperature");
-    if (!temp.empty() && (temp.back() == 'K' || temp.back() == 'k')) temp.pop_back();
-    double kelvin = to_number(node, "temperature", temp);
-    double scale = node.attr("scale") ? parse_number(node, "scale") : 1.0;
-    Rgb c = blackbody_to_rgb(kelvin);
-    return {static_cast<float>(c.r * scale), static_cast<float>(c.g * scale), static_cast<float>(c.b * scale)};
   }
   bad(node, "<" + t + "> is not a colour");
 }
@@ -184,7 +158,7 @@ const XmlNode* Props::find(const std::string& name) const {
     const std::string* n = child->attr("name");
     if (!n || *n != name) continue;
     child->read = true;
-    if (child->tag == "ref") return &doc_.lookup(required(*child, "id"), *child);
+    if (child->tag == "ref") return &doc_.lookup(required_attr(*child, "id"), *child);
     return child.get();
   }
   return nullptr;
@@ -195,7 +169,7 @@ double Props::get_float(const std::string& name, double fallback) const {
   if (!n) return fallback;
   if (n->tag != "float" && n->tag != "integer") bad(*n, "'" + name + "' must be a <float>, not <" + n->tag + ">");
   double v = parse_number(*n, "value");
-  if (!std::isfinite(v)) bad(*n, where_attr(*n, "value") + " is not finite");
+  if (!std::isfinite(v)) bad(*n, describe_attr(*n, "value") + " is not finite");
   return v;
 }
 
@@ -204,23 +178,23 @@ int Props::get_int(const std::string& name, int fallback) const {
   if (!n) return fallback;
   if (n->tag != "integer" && n->tag != "float") bad(*n, "'" + name + "' must be an <integer>, not <" + n->tag + ">");
   double v = parse_number(*n, "value");
-  if (v != std::floor(v) || std::fabs(v) > 2e9) bad(*n, where_attr(*n, "value") + ": not an integer");
+  if (v != std::floor(v) || std::fabs(v) > 2e9) bad(*n, describe_attr(*n, "value") + ": not an integer");
   return static_cast<int>(v);
 }
 
 bool Props::get_bool(const std::string& name, bool fallback) const {
   const XmlNode* n = find(name);
   if (!n) return fallback;
-  std::string v = required(*n, "value");
+  std::string v = required_attr(*n, "value");
   for (char& c : v) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (v == "true" || v == "1") return true;
   if (v == "false" || v == "0") return false;
-  bad(*n, where_attr(*n, "value") + ": '" + v + "' is not true or false");
+  bad(*n, describe_attr(*n, "value") + ": '" + v + "' is not true or false");
 }
 
 std::string Props::get_string(const std::string& name, const std::string& fallback) const {
   const XmlNode* n = find(name);
-  return n ? required(*n, "value") : fallback;
+  return n ? required_attr(*n, "value") : fallback;
 }
 
 Vec3d Props::get_vec3(const std::string& name, Vec3d fallback) const {
@@ -249,7 +223,7 @@ Mat4d Props::get_transform(const std::string& name) const {
 Rgb Props::get_color(const std::string& name, Rgb fallback, SpectrumUse use) const {
   const XmlNode* n = find(name);
   if (!n || n->tag == "texture") return fallback;
-  Rgb c = parse_color(*n, use);
+  Rgb c = n->tag == "spectrum" || n->tag == "blackbody" ? parse_spectrum(*n, doc_, use) : parse_color(*n);
   for (float v : {c.r, c.g, c.b}) {
     if (!std::isfinite(v)) bad(*n, "'" + name + "' is not finite");
     if (v < 0) bad(*n, "'" + name + "' must not be negative");
@@ -268,7 +242,7 @@ std::vector<const XmlNode*> Props::nested(const std::string& tag) const {
     if (child->tag == tag) {
       out.push_back(child.get());
     } else if (child->tag == "ref") {
-      const XmlNode& target = doc_.lookup(required(*child, "id"), *child);
+      const XmlNode& target = doc_.lookup(required_attr(*child, "id"), *child);
       if (target.tag == tag) {
         out.push_back(&target);
         child->read = true;

@@ -12,14 +12,22 @@
 
 namespace gdr {
 
+// "attribute 'value' of <spectrum name="reflectance">" for messages.
+std::string describe_attr(const XmlNode& node, const std::string& attr);
+// The attribute's value; InputError naming file and line when it is missing.
+const std::string& required_attr(const XmlNode& node, const std::string& attr);
 // Strict number parsing of attribute `attr` of `node` (the whole value must be a number).
 double parse_number(const XmlNode& node, const std::string& attr);
+// `text` (part of attribute `attr` of `node`) as a number, parsed as strictly.
+double parse_number_text(const XmlNode& node, const std::string& attr, const std::string& text);
 // A list of numbers separated by commas and/or white space.
 std::vector<double> parse_number_list(const XmlNode& node, const std::string& attr);
+// The items of such a list, unparsed.
+std::vector<std::string> split_number_list(const std::string& text);
 // <point>/<vector>: x/y/z attributes (missing ones 0) or value="x y z".
 Vec3d parse_vec3(const XmlNode& node);
-// <rgb>/<srgb>/<spectrum>/<blackbody>/<float>: the colour as linear RGB.
-Rgb parse_color(const XmlNode& node, SpectrumUse use);
+// <rgb>/<srgb>/<float>/<integer>: the colour as linear RGB (spectra: scene/xml_spectrum.h).
+Rgb parse_color(const XmlNode& node);
 // <transform>: its operations composed in order (each later one applied after the earlier ones).
 Mat4d parse_transform(const XmlNode& node);
 
@@ -41,7 +49,8 @@ class Props {
   std::string get_string(const std::string& name, const std::string& fallback) const;
   Vec3d get_vec3(const std::string& name, Vec3d fallback) const;
   Mat4d get_transform(const std::string& name) const;  // identity when absent
-  // A colour given as a value (InputError when it is not finite or negative); nullptr from
+  // A colour given as a value (InputError when it is not finite or negative); a spectrum is
+  // converted for `use` as Mitsuba 3's RGB variants do (scene/spectrum.h). nullptr from
   // texture() when it is a constant.
   Rgb get_color(const std::string& name, Rgb fallback, SpectrumUse use) const;
   const XmlNode* texture(const std::string& name) const;

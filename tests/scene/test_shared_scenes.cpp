@@ -2,6 +2,7 @@
 // rejected with an InputError naming the file; none crashes. Skipped where the folder is absent.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -68,6 +69,33 @@ TEST(SharedScenes, MitsubaCornellBoxVariants) {
   const GdrMaterial& white = spectral.materials[spectral.shapes[1].material];
   EXPECT_NEAR(white.reflectance[0], white.reflectance[1], 0.05);
   EXPECT_NEAR(white.reflectance[1], 0.73, 0.05);
+}
+
+// The spectral Cornell box's colours are Mitsuba 3's: mitsuba 3.9.1, scalar_rgb,
+// mi.traverse(mi.load_file('cbox.xml'))['red.reflectance.value'] and so on, printed with 9
+// significant digits; within 1 float ulp.
+TEST(SharedScenes, SpectralCornellBoxColoursAreMitsubas) {
+  REQUIRE_SHARED();
+  auto expect_ulp = [](const float* c, const double (&ref)[3], const char* what) {
+    for (int k = 0; k < 3; ++k) {
+      double ulp = std::ldexp(1.0, std::ilogb(static_cast<float>(ref[k])) - 23);
+      EXPECT_LE(std::abs(c[k] - ref[k]), ulp) << what << " " << k << ": " << c[k] << " vs Mitsuba " << ref[k];
+    }
+  };
+  const double light[3] = {0.77636677, 0.779810011, 0.77602911}, white[3] = {0.735013008, 0.735624611, 0.736264348},
+               green[3] = {0.0682825372, 0.397760183, 0.0862908736},
+               red[3] = {0.491320044, 0.0492281057, 0.0509218983}, radiance[3] = {20.7108364, 10.8546343, 2.77115202};
+  for (const char* name : {"cbox.xml", "cbox-spectral.xml"}) {
+    SCOPED_TRACE(name);
+    Scene s = load_shared(std::string("mitsuba-data/scenes/cbox/") + name);
+    ASSERT_EQ(s.shapes.size(), 8u);
+    // Shapes in file order: luminaire, floor, ceiling, back, green wall, red wall, two boxes.
+    expect_ulp(s.materials[s.shapes[0].material].reflectance, light, "luminaire");
+    for (int i : {1, 2, 3, 6, 7}) expect_ulp(s.materials[s.shapes[i].material].reflectance, white, "white");
+    expect_ulp(s.materials[s.shapes[4].material].reflectance, green, "green");
+    expect_ulp(s.materials[s.shapes[5].material].reflectance, red, "red");
+    expect_ulp(s.lights[0].radiance, radiance, "radiance");
+  }
 }
 
 TEST(SharedScenes, BulbSceneWithMissingMeshIsACleanError) {
