@@ -97,7 +97,7 @@ struct SampledValue {
   }
 };
 
-bool uses_d65(SpectrumUse use) { return use != SpectrumUse::Emission; }
+bool uses_d65(SpectrumUse use) { return use == SpectrumUse::Reflectance || use == SpectrumUse::Unbounded; }
 
 }  // namespace
 

@@ -3,8 +3,8 @@
 // gets the colours Mitsuba gives it:
 //  - the samples are interpolated linearly and are zero outside the listed range;
 //  - they are weighted by the CIE 1931 colour-matching functions (the CIE's 5 nm table over
-//    360..830 nm, interpolated linearly: cie1931_d65_5nm.inc) and, for everything but emission,
-//    by D65 normalized to luminance 1, summed at 1000 evenly spaced wavelengths from 360 to
+//    360..830 nm, interpolated linearly: cie1931_d65_5nm.inc) and, for everything but emission
+//    and Mitsuba's measured IOR data, by D65 normalized to luminance 1, summed at 1000 evenly spaced wavelengths from 360 to
 //    830 nm and scaled so that a flat emission spectrum of 1 has luminance 1;
 //  - XYZ goes to linear sRGB by Mitsuba's matrix; then a reflectance is clamped to [0, 1] and
 //    anything else (emission, a conductor's eta and k) to at least 0.
@@ -27,6 +27,9 @@ enum class SpectrumUse {
   Reflectance,  // BSDF reflectances and textures: under D65, clamped to [0, 1] (bounded)
   Unbounded,    // a conductor's eta and k: under D65, clamped to >= 0
   Emission,     // radiance, intensity, irradiance: no D65, clamped to >= 0
+  // A named conductor's eta and k from Mitsuba's data/ior files: no D65, clamped to >= 0 (its
+  // ior_from_file passes d65 = false, unlike an eta spectrum written in the scene).
+  IorFile,
 };
 
 // The CIE 1931 colour-matching functions at `nm`, zero outside 360..830 nm.
