@@ -70,15 +70,17 @@ struct Normals {
 };
 
 inline Normals normal_nodes(const Model& md, int n) {
-  GaussLegendre gu = gauss_legendre(n, 0.0, 1.0), gp = gauss_legendre(n, 0.0, 2 * M_PI);
+  GaussLegendre gs = gauss_legendre(n, 0.0, 1.0), gp = gauss_legendre(n, 0.0, 2 * M_PI);
   Normals r;
   for (int i = 0; i < n; ++i) {
-    double u = gu.nodes[i], a2 = md.alpha * md.alpha;
+    // u = 1 - (1 - x)^2: the visible-normal factor (w.m) / m.z grows like (1 - u)^(-1/2) toward
+    // the horizon (GGX), which this substitution makes smooth in x.
+    double x = gs.nodes[i], u = 1 - (1 - x) * (1 - x), du = 2 * (1 - x), a2 = md.alpha * md.alpha;
     double t2 = md.beckmann ? -a2 * std::log1p(-u) : a2 * u / (1 - u);
     double c = 1 / std::sqrt(1 + t2), s = std::sqrt(t2) * c;
     for (int j = 0; j < n; ++j) {
       r.m.push_back({s * std::cos(gp.nodes[j]), s * std::sin(gp.nodes[j]), c});
-      r.w.push_back(gu.weights[i] * gp.weights[j] / (2 * M_PI));
+      r.w.push_back(gs.weights[i] * du * gp.weights[j] / (2 * M_PI));
     }
   }
   return r;

@@ -107,10 +107,11 @@ TEST(CoatingTables, SmoothCoatingInternalReflectanceIsTheDiffuseFresnelReflectan
   }
 }
 
-// The rough coating's table against the reference model at its own nodes. Transmittance within
-// 2e-3 at every cosine from 1/63 up (the table's 32 x 32 Gauss-Legendre rule over visible
-// normals against the reference's converged integral); R_int, by the same 64-node rule as
-// Mitsuba on both sides, within 1e-3. An alpha of 1e-4 is the smooth coating: t = 1 - F.
+// The rough coating's table against the reference model at its own nodes: transmittance within
+// 1e-3 at every cosine from 1/63 up, R_int (by the same 64-node rule as Mitsuba on both sides)
+// within 3e-4. The table's 32 x 32 Gauss-Legendre rule over the visible normals is the larger
+// error (measured up to 3e-4 in t, 4e-5 in R_int); the reference is converged to 6e-5. An alpha
+// of 1e-4 is the smooth coating: t = 1 - F.
 TEST(CoatingTables, RoughCoatingMatchesTheReferenceModel) {
   struct Case {
     int distribution;
@@ -132,11 +133,11 @@ TEST(CoatingTables, RoughCoatingMatchesTheReferenceModel) {
         double ct = 0;
         want = 1 - cr::fresnel(mu, c.eta, &ct);
       }
-      EXPECT_NEAR(t[GDR_COATING_TRANSMITTANCE + i], want, 2e-3) << "cos " << mu;
+      EXPECT_NEAR(t[GDR_COATING_TRANSMITTANCE + i], want, 1e-3) << "cos " << mu;
       worst = std::fmax(worst, std::fabs(t[GDR_COATING_TRANSMITTANCE + i] - want));
     }
     double r_int = cr::internal_reflectance(md, nn);
-    EXPECT_NEAR(t[GDR_COATING_INTERNAL_REFLECTANCE], r_int, 1e-3);
+    EXPECT_NEAR(t[GDR_COATING_INTERNAL_REFLECTANCE], r_int, 3e-4);
     if (getenv("GDR_PRINT_COATING")) {
       std::printf("t: largest difference %.2e; R_int %.6f, reference %.6f\n", worst,
                   t[GDR_COATING_INTERNAL_REFLECTANCE], r_int);

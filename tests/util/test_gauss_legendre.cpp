@@ -14,7 +14,9 @@ TEST(GaussLegendre, ExactForPolynomialsUpToDegree2nMinus1) {
     double weight_sum = 0;
     for (int i = 0; i < n; ++i) {
       weight_sum += g.weights[i];
-      if (i > 0) EXPECT_LT(g.nodes[i - 1], g.nodes[i]) << n;
+      if (i > 0) {
+        EXPECT_LT(g.nodes[i - 1], g.nodes[i]) << n;
+      }
     }
     EXPECT_NEAR(weight_sum, 2.0, 1e-13) << n;
     for (int k : {0, 1, 2 * n - 1, 2 * n}) {
