@@ -1,11 +1,12 @@
 #include "render/device_scene.h"
 
+#include "render/coating_tables.h"
 #include "render/environment_distribution.h"
 #include "render/light_distribution.h"
 
 namespace gdr {
 
-SceneArrays scene_arrays(const Scene& s) {
+SceneArrays scene_arrays(Context& ctx, const Scene& s) {
   SceneArrays a;
   a.triangles = s.triangles;
   a.positions = s.positions;
@@ -13,6 +14,11 @@ SceneArrays scene_arrays(const Scene& s) {
   a.uvs = s.uvs;
   a.shapes = s.shapes;
   a.materials = s.materials;
+  std::vector<bool> used(s.materials.size(), false);  // no table for a material no shape uses
+  for (const GdrShape& shape : s.shapes) {
+    if (shape.material >= 0 && size_t(shape.material) < used.size()) used[shape.material] = true;
+  }
+  build_coating_tables(ctx, a.materials, a.coating_tables, used);
   a.textures = s.textures;
   a.texels = s.texels;
   a.lights = s.lights;
@@ -26,7 +32,7 @@ DeviceScene::DeviceScene(Context& ctx, const Scene& s)
       light_count_(static_cast<int>(s.lights.size())),
       width_(s.camera.width),
       height_(s.camera.height) {
-  SceneArrays a = scene_arrays(s);
+  SceneArrays a = scene_arrays(ctx, s);
 #define GDR_SCENE_UPLOAD(ktype, htype, name, what) name##_ = Buffer<htype>(ctx, a.name, CL_MEM_READ_ONLY);
   GDR_SCENE_BUFFERS(GDR_SCENE_UPLOAD, GDR_SCENE_UPLOAD)
 #undef GDR_SCENE_UPLOAD

@@ -14,14 +14,15 @@
 namespace gdr {
 
 // The host's arrays of the scene buffers, as uploaded (the lights with their table offsets, the
-// light selection cdf and the environment tables are derived from the scene here).
+// light selection cdf and the environment tables are derived from the scene here, and so are
+// the materials' coating tables, computed on the context's device).
 #define GDR_SCENE_ARRAY(ktype, htype, name, what) std::vector<htype> name;
 struct SceneArrays {
   GDR_SCENE_BUFFERS(GDR_SCENE_ARRAY, GDR_SCENE_ARRAY)
 };
 #undef GDR_SCENE_ARRAY
 
-SceneArrays scene_arrays(const Scene& scene);
+SceneArrays scene_arrays(Context& context, const Scene& scene);
 
 class DeviceScene {
  public:

@@ -20,6 +20,7 @@ GdrMaterial base_material(int type) {
   set4(m.specular_transmittance, Rgb(1.0f));
   set4(m.eta, Rgb(1.0f));
   m.alpha_u = m.alpha_v = 0.1f;
+  m.coating_table = -1;  // set when the scene is uploaded
   return m;
 }
 
@@ -173,8 +174,18 @@ GdrMaterial make_material(LoadContext& ctx, const XmlNode& node, int* twosided_o
     read_reflectance(ctx, p, "diffuse_reflectance", m);
     set4(m.specular_reflectance, read_constant(ctx, p, "specular_reflectance", Rgb(1.0f)));
     m.nonlinear = p.get_bool("nonlinear", false) ? 1 : 0;
-    if (type == "roughplastic") read_roughness(ctx, p, m);
-    else m.alpha_u = m.alpha_v = 0.0f;
+    if (type == "roughplastic") {
+      read_roughness(ctx, p, m);
+      // Its coating is tabulated over cos(theta) only (render/coating_tables.h), as in Mitsuba 3,
+      // which refuses anisotropic roughplastic too.
+      if (m.alpha_u != m.alpha_v) {
+        const XmlNode* n = p.find("alpha_u") ? p.find("alpha_u") : &p.node();
+        throw InputError(n->file, n->line, "roughplastic does not support anisotropic roughness "
+                                           "(alpha_u != alpha_v): give one 'alpha'");
+      }
+    } else {
+      m.alpha_u = m.alpha_v = 0.0f;
+    }
     return m;
   }
   if (type == "bumpmap" || type == "normalmap" || type == "mask" || type == "coating" ||

@@ -52,8 +52,10 @@
 #define GDR_USE_ROUGH_PLASTIC 1
 #endif
 
-// Resolves a material at a hit point; `reflectance` is the (textured) diffuse reflectance.
-inline Bsdf bsdf_from_material(__global const GdrMaterial* m, float3 reflectance) {
+// Resolves a material at a hit point; `reflectance` is the (textured) diffuse reflectance,
+// `coating_tables` the scene's buffer of them (0 while they are being built).
+inline Bsdf bsdf_from_material(__global const GdrMaterial* m, __global const float* coating_tables,
+                               float3 reflectance) {
   Bsdf b;
   b.type = m->type;
   b.twosided = m->twosided;
@@ -72,16 +74,8 @@ inline Bsdf bsdf_from_material(__global const GdrMaterial* m, float3 reflectance
   if (is_interface && !(b.eta.x > 0.0f && isfinite(b.eta.x))) b.eta.x = 1.0f;
   float s_mean = mean3(b.specular_r), d_mean = mean3(b.diffuse);
   b.specular_weight = s_mean + d_mean > 0.0f ? s_mean / (s_mean + d_mean) : 0.5f;
-  b.internal_reflectance = 0.0f;
-#ifdef GDR_USE_PLASTIC
-  if (b.type == BSDF_PLASTIC) b.internal_reflectance = fresnel_diffuse_reflectance(1.0f / b.eta.x);
-#endif
-#ifdef GDR_USE_ROUGH_PLASTIC
-  if (b.type == BSDF_ROUGH_PLASTIC) {
-    b.internal_reflectance = rough_coating_internal_reflectance(sqrt(b.alpha_u * b.alpha_v),
-                                                                b.eta.x);
-  }
-#endif
+  b.coating = coating_tables && m->coating_table >= 0 ? coating_tables + m->coating_table : 0;
+  b.internal_reflectance = coating_internal_reflectance(b.coating);
   return b;
 }
 

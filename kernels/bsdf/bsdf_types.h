@@ -11,9 +11,11 @@ typedef struct Bsdf {
   float3 diffuse;    // diffuse reflectance (textured value)
   float3 specular_r, specular_t, eta, k;
   float alpha_u, alpha_v;  // clamped to >= GDR_MIN_ALPHA
-  // Derived by bsdf_from_material (plastics): probability weight of the specular lobe, and the
-  // diffuse reflectance of the coating seen from inside.
+  // Derived by bsdf_from_material (plastics): probability weight of the specular lobe, the
+  // material's coating table (shared/coating_table.h; 0 without one) and the diffuse
+  // reflectance of the coating seen from inside, read from it.
   float specular_weight;
+  __global const float* coating;
   float internal_reflectance;
 } Bsdf;
 

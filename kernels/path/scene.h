@@ -9,5 +9,5 @@ inline SceneData path_scene(const GdrPtParams* p, SCENE_DATA_ARGS) {
 }
 
 inline Bsdf surface_bsdf(const SceneData* s, const Surface* su) {
-  return bsdf_from_material(&s->materials[su->material], surface_reflectance(s, su));
+  return bsdf_from_material(&s->materials[su->material], s->coating_tables, surface_reflectance(s, su));
 }

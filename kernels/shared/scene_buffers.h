@@ -18,4 +18,5 @@
   NEXT(float4, Vec4, texels, "linear RGB texels of every bitmap")                                \
   NEXT(GdrLight, GdrLight, lights, "emitters, with their sampling tables' offsets")              \
   NEXT(float, float, light_cdf, "light selection cdf: light_count + 1 entries, 0 ... 1")         \
-  NEXT(float, float, env_tables, "environment-map sampling tables (shared/environment_table.h)")
+  NEXT(float, float, env_tables, "environment-map sampling tables (shared/environment_table.h)") \
+  NEXT(float, float, coating_tables, "plastics' coating tables, per material (shared/coating_table.h)")

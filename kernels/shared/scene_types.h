@@ -32,7 +32,8 @@ typedef struct GdrMaterial {
   float alpha_u;  // roughness (alpha) along the tangent; alpha_u == alpha_v for isotropic
   float alpha_v;
   int nonlinear;  // plastic: account for colour shift from internal scattering
-  int pad0;
+  int coating_table;  // plastics: offset of the material's table in coating_tables (set when the
+                      // scene is uploaded; shared/coating_table.h), else -1
 } GdrMaterial;
 
 #define TEXTURE_BITMAP 0

@@ -5,13 +5,14 @@
 
 // One sample per item: wo[i] (xyz), uniforms u[i] (xyz). Outputs: wi_pdf = (wi, pdf),
 // weight_eta = (weight, eta), flags = (ok, delta, transmitted, 0); zeros when there is no sample.
-__kernel void bsdf_sample_batch(__global const GdrMaterial* mat, float4 reflectance,
+__kernel void bsdf_sample_batch(__global const GdrMaterial* mat, __global const float* coating,
+                                float4 reflectance,
                                 __global const float4* wo, __global const float4* u, uint n,
                                 __global float4* wi_pdf, __global float4* weight_eta,
                                 __global int4* flags) {
   uint i = get_global_id(0);
   if (i >= n) return;
-  Bsdf b = bsdf_from_material(mat, reflectance.xyz);
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
   BsdfSample s;
   int ok = bsdf_sample(&b, wo[i].xyz, u[i].xyz, &s);
   if (!ok) {
@@ -26,12 +27,13 @@ __kernel void bsdf_sample_batch(__global const GdrMaterial* mat, float4 reflecta
 }
 
 // n samples for one wo, uniforms from the engine's RNG keyed by (seed, pixel 0, sample i).
-__kernel void bsdf_sample_rng(__global const GdrMaterial* mat, float4 reflectance, float4 wo,
+__kernel void bsdf_sample_rng(__global const GdrMaterial* mat, __global const float* coating,
+                              float4 reflectance, float4 wo,
                               uint seed, uint n, __global float4* wi_pdf,
                               __global float4* weight_eta, __global int4* flags) {
   uint i = get_global_id(0);
   if (i >= n) return;
-  Bsdf b = bsdf_from_material(mat, reflectance.xyz);
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
   float4 u = rng_block(seed, 0u, i, 0u);
   BsdfSample s;
   int ok = bsdf_sample(&b, wo.xyz, u.xyz, &s);
@@ -47,11 +49,12 @@ __kernel void bsdf_sample_rng(__global const GdrMaterial* mat, float4 reflectanc
 }
 
 // Throughput-only sampling for the benchmark: sums the weight so nothing is optimized away.
-__kernel void bsdf_sample_bench(__global const GdrMaterial* mat, float4 reflectance, float4 wo,
+__kernel void bsdf_sample_bench(__global const GdrMaterial* mat, __global const float* coating,
+                                float4 reflectance, float4 wo,
                                 uint seed, uint n, __global float* out) {
   uint i = get_global_id(0);
   if (i >= n) return;
-  Bsdf b = bsdf_from_material(mat, reflectance.xyz);
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
   float4 u = rng_block(seed, 0u, i, 0u);
   BsdfSample s;
   int ok = bsdf_sample(&b, wo.xyz, u.xyz, &s);
@@ -59,18 +62,20 @@ __kernel void bsdf_sample_bench(__global const GdrMaterial* mat, float4 reflecta
 }
 
 // eval_pdf[i] = (bsdf_eval(wo[i], wi[i]), bsdf_pdf(wo[i], wi[i])).
-__kernel void bsdf_eval_batch(__global const GdrMaterial* mat, float4 reflectance,
+__kernel void bsdf_eval_batch(__global const GdrMaterial* mat, __global const float* coating,
+                              float4 reflectance,
                               __global const float4* wo, __global const float4* wi, uint n,
                               __global float4* eval_pdf) {
   uint i = get_global_id(0);
   if (i >= n) return;
-  Bsdf b = bsdf_from_material(mat, reflectance.xyz);
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
   eval_pdf[i] = (float4)(bsdf_eval(&b, wo[i].xyz, wi[i].xyz), bsdf_pdf(&b, wo[i].xyz, wi[i].xyz));
 }
 
 // bsdf_pdf(wo, wi) on the tensor grid theta[0..nt) x phi[0..np) (row-major, phi fastest): the
 // host integrates it over the chi-square bins.
-__kernel void bsdf_pdf_grid(__global const GdrMaterial* mat, float4 reflectance, float4 wo,
+__kernel void bsdf_pdf_grid(__global const GdrMaterial* mat, __global const float* coating,
+                            float4 reflectance, float4 wo,
                             __global const float* theta, uint nt, __global const float* phi,
                             uint np, __global float* pdf) {
   uint i = get_global_id(0);
@@ -78,14 +83,15 @@ __kernel void bsdf_pdf_grid(__global const GdrMaterial* mat, float4 reflectance,
   float t = theta[i / np], p = phi[i % np];
   float st = sin(t);
   float3 wi = (float3)(st * cos(p), st * sin(p), cos(t));
-  Bsdf b = bsdf_from_material(mat, reflectance.xyz);
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
   pdf[i] = bsdf_pdf(&b, wo.xyz, wi);
 }
 
 // Per material: (roughness, is_delta, has_diffuse_lobe, has_delta_lobe).
-__kernel void bsdf_info(__global const GdrMaterial* mat, float4 reflectance, __global float4* out) {
+__kernel void bsdf_info(__global const GdrMaterial* mat, __global const float* coating,
+                        float4 reflectance, __global float4* out) {
   if (get_global_id(0) != 0) return;
-  Bsdf b = bsdf_from_material(mat, reflectance.xyz);
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
   out[0] = (float4)(bsdf_roughness(&b), (float)bsdf_is_delta(&b), (float)bsdf_has_diffuse_lobe(&b),
                     (float)bsdf_has_delta_lobe(&b));
 }

@@ -36,10 +36,10 @@ void BM_BsdfSample(benchmark::State& state) {
   const int family = static_cast<int>(state.range(0));
   const unsigned count = 1u << 20;
   GdrMaterial m = bench_material(family);
-  Buffer<GdrMaterial> mat(ctx, std::vector<GdrMaterial>{m});
+  test::DeviceMaterial mat = k.upload(m);
   Buffer<float> out(ctx, count);
   Kernel kernel = k.program()->kernel("bsdf_sample_bench");
-  kernel.args(mat, test::reflectance_of(m), test::dir_cos(0.6, 0.3), 1u, count, out);
+  kernel.args(mat.material, mat.coating_tables, test::reflectance_of(m), test::dir_cos(0.6, 0.3), 1u, count, out);
   kernel.run(count);  // PoCL compiles the work-group function at the first launch
   for (auto _ : state) kernel.run(count);
   state.SetItemsProcessed(int64_t(state.iterations()) * count);

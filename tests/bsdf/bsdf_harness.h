@@ -4,11 +4,15 @@
 #include <CL/cl.h>
 
 #include <cmath>
+#include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "device/context.h"
+#include "render/coating_tables.h"
+#include "shared/coating_table.h"
 #include "shared/scene_types.h"
 #include "support/devices.h"
 
@@ -50,6 +54,7 @@ inline GdrMaterial base_material(int type) {
   set3(m.k, 0, 0, 0);
   m.alpha_u = m.alpha_v = 0.1f;
   m.nonlinear = 0;
+  m.coating_table = -1;
   return m;
 }
 
@@ -106,6 +111,12 @@ struct SampleBatch {
   std::vector<cl_int4> flags;         // (ok, delta, transmitted, 0)
 };
 
+// A material on the device with its coating table, as a scene upload makes them.
+struct DeviceMaterial {
+  Buffer<GdrMaterial> material;
+  Buffer<float> coating_tables;
+};
+
 // The BSDF test kernels on the default device (built once per process).
 class BsdfKernels {
  public:
@@ -113,12 +124,33 @@ class BsdfKernels {
 
   Context& context() { return ctx_; }
 
+  // The material's coating table (render/coating_tables.h: built by the engine's kernels, once
+  // per coating_key, as a scene shares them) and its coating_table offset in it.
+  const std::vector<float>& coating_table(const GdrMaterial& m, int* offset) {
+    std::vector<GdrMaterial> one{m};
+    auto it = tables_.find(coating_key(m));
+    if (it == tables_.end()) {
+      std::vector<float> tables;
+      build_coating_tables(ctx_, one, tables);
+      it = tables_.emplace(coating_key(m), tables).first;
+    }
+    *offset = coating_table_size(m.type) > 0 ? 0 : -1;
+    return it->second;
+  }
+
+  DeviceMaterial upload(const GdrMaterial& m) {
+    GdrMaterial coated = m;
+    const std::vector<float>& table = coating_table(m, &coated.coating_table);
+    return {Buffer<GdrMaterial>(ctx_, std::vector<GdrMaterial>{coated}), Buffer<float>(ctx_, table)};
+  }
+
   SampleBatch sample_rng(const GdrMaterial& m, cl_float4 wo, unsigned seed, unsigned n) {
-    Buffer<GdrMaterial> mat(ctx_, std::vector<GdrMaterial>{m});
+    DeviceMaterial mat = upload(m);
     Buffer<cl_float4> wi_pdf(ctx_, n), weight_eta(ctx_, n);
     Buffer<cl_int4> flags(ctx_, n);
     program_->kernel("bsdf_sample_rng")
-        .args(mat, reflectance_of(m), wo, seed, n, wi_pdf, weight_eta, flags)
+        .args(mat.material, mat.coating_tables, reflectance_of(m), wo, seed, n, wi_pdf,
+              weight_eta, flags)
         .run(n);
     return {wi_pdf.read(), weight_eta.read(), flags.read()};
   }
@@ -126,11 +158,12 @@ class BsdfKernels {
   SampleBatch sample(const GdrMaterial& m, const std::vector<cl_float4>& wo,
                      const std::vector<cl_float4>& u) {
     unsigned n = static_cast<unsigned>(wo.size());
-    Buffer<GdrMaterial> mat(ctx_, std::vector<GdrMaterial>{m});
+    DeviceMaterial mat = upload(m);
     Buffer<cl_float4> wo_buf(ctx_, wo), u_buf(ctx_, u), wi_pdf(ctx_, n), weight_eta(ctx_, n);
     Buffer<cl_int4> flags(ctx_, n);
     program_->kernel("bsdf_sample_batch")
-        .args(mat, reflectance_of(m), wo_buf, u_buf, n, wi_pdf, weight_eta, flags)
+        .args(mat.material, mat.coating_tables, reflectance_of(m), wo_buf, u_buf, n, wi_pdf,
+              weight_eta, flags)
         .run(n);
     return {wi_pdf.read(), weight_eta.read(), flags.read()};
   }
@@ -139,27 +172,32 @@ class BsdfKernels {
   std::vector<cl_float4> eval(const GdrMaterial& m, const std::vector<cl_float4>& wo,
                               const std::vector<cl_float4>& wi) {
     unsigned n = static_cast<unsigned>(wo.size());
-    Buffer<GdrMaterial> mat(ctx_, std::vector<GdrMaterial>{m});
+    DeviceMaterial mat = upload(m);
     Buffer<cl_float4> wo_buf(ctx_, wo), wi_buf(ctx_, wi), out(ctx_, n);
-    program_->kernel("bsdf_eval_batch").args(mat, reflectance_of(m), wo_buf, wi_buf, n, out).run(n);
+    program_->kernel("bsdf_eval_batch")
+        .args(mat.material, mat.coating_tables, reflectance_of(m), wo_buf, wi_buf, n, out)
+        .run(n);
     return out.read();
   }
 
   std::vector<float> pdf_grid(const GdrMaterial& m, cl_float4 wo, const std::vector<float>& theta,
                               const std::vector<float>& phi) {
     unsigned nt = static_cast<unsigned>(theta.size()), np = static_cast<unsigned>(phi.size());
-    Buffer<GdrMaterial> mat(ctx_, std::vector<GdrMaterial>{m});
+    DeviceMaterial mat = upload(m);
     Buffer<float> t(ctx_, theta), p(ctx_, phi), out(ctx_, size_t(nt) * np);
-    program_->kernel("bsdf_pdf_grid").args(mat, reflectance_of(m), wo, t, nt, p, np, out).run(
-        size_t(nt) * np);
+    program_->kernel("bsdf_pdf_grid")
+        .args(mat.material, mat.coating_tables, reflectance_of(m), wo, t, nt, p, np, out)
+        .run(size_t(nt) * np);
     return out.read();
   }
 
   // (roughness, is_delta, has_diffuse_lobe, has_delta_lobe).
   cl_float4 info(const GdrMaterial& m) {
-    Buffer<GdrMaterial> mat(ctx_, std::vector<GdrMaterial>{m});
+    DeviceMaterial mat = upload(m);
     Buffer<cl_float4> out(ctx_, 1);
-    program_->kernel("bsdf_info").args(mat, reflectance_of(m), out).run(1);
+    program_->kernel("bsdf_info")
+        .args(mat.material, mat.coating_tables, reflectance_of(m), out)
+        .run(1);
     return out.read()[0];
   }
 
@@ -168,6 +206,7 @@ class BsdfKernels {
  private:
   Context& ctx_;
   std::shared_ptr<Program> program_;
+  std::map<std::array<uint32_t, 5>, std::vector<float>> tables_;
 };
 
 inline BsdfKernels& bsdf_kernels() {

@@ -1,7 +1,8 @@
 // The scene-buffer list (kernels/shared/scene_buffers.h) binds as the kernels declare it: a
 // kernel reading each buffer through SCENE_DATA_ARGS, with DeviceScene passed among its other
 // arguments, sees every word of the host's arrays, buffer by buffer. A scene with an
-// environment map, spheres (normals, uvs) and two materials, so that no buffer is empty.
+// environment map, spheres (normals, uvs) and its materials, the ground made rough plastic (a
+// coating table), so that no buffer is empty.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -37,10 +38,23 @@ Words host_words(const SceneArrays& a) {
   return w;
 }
 
-TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
+// The envmap scene with its last shape (the ground) made rough plastic.
+Scene scene_with_plastic() {
   Scene scene = test::envmap_scene();
+  GdrMaterial plastic = scene.materials[scene.shapes.back().material];
+  plastic.type = BSDF_ROUGH_PLASTIC;
+  plastic.eta[0] = 1.5f;
+  plastic.alpha_u = plastic.alpha_v = 0.2f;
+  scene.shapes.back().material = static_cast<int>(scene.materials.size());
+  scene.materials.push_back(plastic);
+  scene.material_names.push_back("rough plastic ground");
+  return scene;
+}
+
+TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
+  Scene scene = scene_with_plastic();
   Context& ctx = test::default_context();
-  SceneArrays arrays = scene_arrays(scene);
+  SceneArrays arrays = scene_arrays(ctx, scene);
   Words host = host_words(arrays);
   for (size_t b = 0; b < host.names.size(); ++b) {
     ASSERT_GT(host.offsets[b + 1], host.offsets[b]) << "the test scene has no " << host.names[b];
@@ -65,7 +79,7 @@ TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
 // The environment tables follow their shared layout: each cdf starts at 0 and ends at 1.
 TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   Scene scene = test::envmap_scene();
-  SceneArrays a = scene_arrays(scene);
+  SceneArrays a = scene_arrays(test::default_context(), scene);
   const GdrLight& env = a.lights.back();
   ASSERT_EQ(env.type, LIGHT_ENVMAP);
   const GdrTexture& t = a.textures[env.texture];

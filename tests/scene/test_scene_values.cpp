@@ -81,6 +81,22 @@ TEST(SceneValues, NegativeEnvmapScaleIsAnError) {
                4, {"scale", "negative"});
 }
 
+// Mitsuba 3 refuses anisotropic roughplastic (its coating table depends on cos(theta) only).
+TEST(SceneValues, AnisotropicRoughPlasticIsAnError) {
+  test::TempFolder folder;
+  expect_error(folder, std::string(kLight) + "<shape type=\"sphere\"><bsdf type=\"roughplastic\">\n"
+                                             "<float name=\"alpha_u\" value=\"0.1\"/><float name=\"alpha_v\" value=\"0.3\"/>"
+                                             "</bsdf></shape>",
+               4, {"roughplastic", "anisotropic"});
+  // Equal alphas given one by one are isotropic.
+  Scene s = load(folder, std::string(kLight) + "<shape type=\"sphere\"><bsdf type=\"roughplastic\">\n"
+                                               "<float name=\"alpha_u\" value=\"0.2\"/><float name=\"alpha_v\" value=\"0.2\"/>"
+                                               "</bsdf></shape>");
+  const GdrMaterial& m = s.materials.at(s.shapes.at(0).material);
+  EXPECT_EQ(m.type, BSDF_ROUGH_PLASTIC);
+  EXPECT_FLOAT_EQ(m.alpha_u, 0.2f);
+}
+
 TEST(SceneValues, UnknownParameterIsAWarningOrStrictError) {
   test::TempFolder folder;
   std::string body = std::string(kLight) + "\n<shape type=\"sphere\"><bsdf type=\"diffuse\">\n"
