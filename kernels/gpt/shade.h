@@ -11,6 +11,7 @@
 #include "path/shadow.h"
 #include "path/spawn.h"
 #include "shift/joined.h"
+#include "shift/policy.h"
 #include "shift/reconnect.h"
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
@@ -94,6 +95,12 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     if (o[k].mode == GPT_MODE_TRACE) {
       so[k] = surface_at(&s, o[k].prim, o[k].b1, o[k].b2);
       wo_off[k] = -vload3(0, o[k].dir);
+      if (o[k].glossy_next_only) {
+        Bsdf bo = surface_bsdf(&s, &so[k]);
+        if (!shift_reverses_at(&bo, params.shift_threshold)) {
+          kill_offset(&o[k], counters, GPT_COUNTER_FAIL_NOT_INVERTIBLE);
+        }
+      }
     } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
       wo_off[k] = normalize_or(vload3(0, o[k].prev_pos) - su.p, wo);
     }
