@@ -33,6 +33,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     os.last_pdf = 1.0f;
     os.last_delta = 0;
     os.visible = 0;
+    os.glossy_next_only = 0;  // the pixel shift holds wherever the offset lands
     int nx = px + OFFSET_PIXEL_DX(k), ny = py + OFFSET_PIXEL_DY(k);
     if (nx < 0 || ny < 0 || nx >= params.path.width || ny >= params.path.height) {
       kill_offset(&os, counters, GPT_COUNTER_FAIL_OUTSIDE);

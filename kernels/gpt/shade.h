@@ -11,21 +11,21 @@
 #include "path/shadow.h"
 #include "path/spawn.h"
 #include "shift/joined.h"
-#include "shift/reconnect.h"
+#include "shift/policy.h"
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
 // and the offset's le_off (with q_off, the offset's own light-sampling pdf for that emitter),
-// weighted among the pair's four techniques. A dead offset leaves plain path-tracing MIS.
+// each weighted by gpt_weight with its own pdfs. A dead offset leaves plain path-tracing MIS.
 inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const GptOffsetState* o, float p_bsdf,
                               float p_light, float3 c_base, float3 le_off, float q_off, __global uint* nonfinite) {
-  float w = gpt_weight(p_bsdf, p_light, 0.0f, 0.0f, 0.0f);
+  float r = 0.0f;
   float3 c_off = (float3)(0.0f);
   if (offset_alive(o)) {
-    w = gpt_weight(p_bsdf, p_light, o->ratio * safe_div(p_bsdf, o->last_pdf), o->last_pdf, q_off);
-    c_off = vload3(0, o->throughput) * le_off;
+    r = o->ratio;
+    c_off = vload3(0, o->throughput) * le_off * gpt_weight(o->last_pdf, q_off, r);
   }
-  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w * c_base, nonfinite));
-  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w * c_off, nonfinite));
+  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(gpt_weight(p_bsdf, p_light, r) * c_base, nonfinite));
+  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(c_off, nonfinite));
 }
 
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
@@ -94,6 +94,12 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     if (o[k].mode == GPT_MODE_TRACE) {
       so[k] = surface_at(&s, o[k].prim, o[k].b1, o[k].b2);
       wo_off[k] = -vload3(0, o[k].dir);
+      if (o[k].glossy_next_only) {
+        Bsdf bo = surface_bsdf(&s, &so[k]);
+        if (!shift_reverses_at(&bo, params.shift_threshold)) {
+          kill_offset(&o[k], counters, GPT_COUNTER_FAIL_NOT_INVERTIBLE);
+        }
+      }
     } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
       wo_off[k] = normalize_or(vload3(0, o[k].prev_pos) - su.p, wo);
     }
@@ -146,17 +152,19 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
     int base_ray_needed = 0;
     for (int k = 0; k < GPT_OFFSETS; ++k) {
-      float w = gpt_weight(p_light, p_b, 0.0f, 0.0f, 0.0f);
+      // The offset's partner under light sampling reconnects to the same light point: the ratio
+      // of the pair is its prefix ratio. c_off comes weighted with the offset's own pdfs.
+      float r = 0.0f;
       float3 c_off = (float3)(0.0f);
       int own_ray = 0;
       if (o[k].mode == GPT_MODE_JOINED) {
-        w = gpt_weight(p_light, p_b, o[k].ratio, p_light, p_b);
-        c_off = vload3(0, o[k].throughput) * f_le;
+        r = o[k].ratio;
+        c_off = vload3(0, o[k].throughput) * f_le * gpt_weight(p_light, p_b, r);
       } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
         float3 wr = frame_to_local(&frame, wo_off[k]);
         float q_b = ls.delta ? 0.0f : bsdf_pdf(&b, wr, wi_l);
-        w = gpt_weight(p_light, p_b, o[k].ratio, p_light, q_b);
-        c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf;
+        r = o[k].ratio;
+        c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf * gpt_weight(p_light, q_b, r);
       } else if (o[k].mode == GPT_MODE_TRACE) {
         Bsdf bo = surface_bsdf(&s, &so[k]);
         LightSample lo = ls;
@@ -165,25 +173,24 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
           float3 wol = frame_to_local(&fo, wo_off[k]), wil = frame_to_local(&fo, lo.wi);
           if (sides_agree(lo.wi, so[k].ng, wil.z)) {
             float q_b = lo.delta ? 0.0f : bsdf_pdf(&bo, wol, wil);
-            float jac = 1.0f;
-            if (!lo.delta && !isinf(lo.dist)) jac = reconnect_jacobian(su.p, so[k].p, so[k].p + lo.wi * lo.dist, lo.light_normal);
-            w = gpt_weight(p_light, p_b, o[k].ratio, p_light, jac * q_b);
-            c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf;
+            r = o[k].ratio;
+            c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf *
+                    gpt_weight(lo.pdf, q_b, r);
             own_ray = c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f;
             if (own_ray) {
-              c_off = checked(w * c_off, nonfinite);
+              c_off = checked(c_off, nonfinite);
               pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
-              uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-              write_light_ray(&shadow_rays[r], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
+              uint slot = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+              write_light_ray(&shadow_rays[slot], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
             }
           }
         }
       }
-      float3 cb = checked(w * c_base, nonfinite);
+      float3 cb = checked(gpt_weight(p_light, p_b, r) * c_base, nonfinite);
       pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
       base_ray_needed |= cb.x > 0.0f || cb.y > 0.0f || cb.z > 0.0f;
       if (!own_ray && (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT)) {
-        float3 co = checked(w * c_off, nonfinite);
+        float3 co = checked(c_off, nonfinite);
         pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
         base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
       }

@@ -58,14 +58,15 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     ShiftVertex y = shift_vertex_at(&s, o.prim, o.b1, o.b2, -vload3(0, o.dir), thr);
     ShiftPrefix pre = offset_prefix(&o);
     float3 wiy_w;  // the offset's new direction (world)
-    int reconnect;
-    int reason = shift_offset(params.shift, &x, &next, &y, &pre, &wiy_w, &reconnect, counters);
+    int reconnect, glossy_next_only;
+    int reason = shift_offset(params.shift, &x, &next, &y, &pre, &wiy_w, &reconnect, &glossy_next_only, counters);
     if (reason) {
       kill_offset(&o, counters, reason);
       *og = o;
       continue;
     }
     offset_keep(&o, &pre);
+    o.glossy_next_only = glossy_next_only;
     vstore3(y.su.p, 0, o.prev_pos);
     vstore3(wiy_w, 0, o.dir);
     uint id = g * GPT_OFFSETS + (uint)k;

@@ -9,11 +9,15 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
   return isfinite(r) ? 1.0f / (1.0f + r * r) : 0.0f;
 }
 
-// Balance-heuristic weight of the base's sample among four techniques: the base's own two (the
-// sampled one with pdf p, the other with pdf q) and the offset's two (p_off, q_off) scaled by the
-// offset's prefix ratio r = p(y)|J| / p(x) (Kettunen et al. 2015, eq. 7 with next-event
-// estimation). A dead offset has r = 0 and leaves the plain path-tracing MIS weight.
-inline float gpt_weight(float p, float q, float r, float p_off, float q_off) {
-  float denom = p + q + r * (p_off + q_off);
-  return denom > 0.0f && isfinite(denom) ? p / denom : 0.0f;
+// Weight of one path of a gradient-domain pair (base x or offset y) for the technique that found
+// its emitter: the path's own balance weight p / (p + q) between its two techniques (p: the one
+// that found the emitter, q: the other), times the base's share 1 / (1 + r) of the pair under that
+// technique, r = p(y)|J| / p(x) (0 for a dead offset: plain path-tracing MIS). The techniques pair
+// a path differently (BSDF sampling by the shift policy, light sampling by reconnecting to the
+// same light point), so the pair's pdfs are not pooled over both techniques (Kettunen et al. 2015,
+// eq. 7): pooled weights sum to one only where the two partners coincide, these for any partners.
+inline float gpt_weight(float p, float q, float r) {
+  float pair = 1.0f + r;
+  if (!(p > 0.0f) || !(pair > 0.0f) || !isfinite(pair)) return 0.0f;
+  return p / (p + q) / pair;
 }

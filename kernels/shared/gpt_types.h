@@ -65,6 +65,7 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_FAIL_REFRACTION, "shift_failures/refraction") /* total internal reflection in one */ \
   X(GPT_COUNTER_FAIL_OCCLUDED, "shift_failures/occluded")   /* reconnection segment blocked */       \
   X(GPT_COUNTER_FAIL_ENVIRONMENT, "shift_failures/environment_mismatch") /* one escaped */           \
+  X(GPT_COUNTER_FAIL_NOT_INVERTIBLE, "shift_failures/not_invertible") /* the reverse shift differs */ \
   X(GPT_COUNTER_FAIL_ZERO, "shift_failures/zero_pdf_or_value") /* or inconsistent sides */           \
   X(GPT_COUNTER_FAIL_NONFINITE, "shift_failures/nonfinite") /* throughput or pdf ratio overflowed */
 enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };

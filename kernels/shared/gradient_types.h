@@ -28,5 +28,6 @@ typedef struct GptOffsetState {
   float t;
   int visible;          // RECONNECTING: the reconnection segment was unoccluded
   int last_delta;       // the ray to the current vertex left a delta lobe
-  int pad0, pad1;
+  int glossy_next_only; // TRACE: the shift holds only if the current vertex is glossy
+  int pad0;
 } GptOffsetState;

@@ -57,13 +57,16 @@ inline ShiftVertex shift_vertex_at(const SceneData* s, uint prim, float b1, floa
 }
 
 // Shifts the offset's prefix o across y by the policy (shift: GPT_SHIFT_*): its new direction
-// *wi_world, and *reconnect where it goes straight to x_{k+1} (visibility still to be tested).
+// *wi_world, *reconnect where it goes straight to x_{k+1} (visibility still to be tested), and
+// *glossy_next_only where the offset's next vertex must be glossy (shift_reverses_at).
 // Counts each shift taken (GPT_COUNTER_SHIFT_*). Returns 0, or the GPT_COUNTER_FAIL_* reason the
 // offset cannot follow.
 inline int shift_offset(int shift, const ShiftBase* x, const ShiftNext* next, const ShiftVertex* y,
-                        ShiftPrefix* o, float3* wi_world, int* reconnect, __global uint* counters) {
+                        ShiftPrefix* o, float3* wi_world, int* reconnect, int* glossy_next_only,
+                        __global uint* counters) {
   int reason = 0;
   *reconnect = 0;
+  *glossy_next_only = 0;
   if (shift == GPT_SHIFT_REPLAY) {
     BsdfSample so;
     if (!shift_replay(&y->b, y->wo, x->u, x->delta, &so)) {
@@ -108,6 +111,8 @@ inline int shift_offset(int shift, const ShiftBase* x, const ShiftNext* next, co
       wiy = frame_to_local(&y->frame, *wi_world);
       atomic_inc(&counters[GPT_COUNTER_SHIFT_DIRECTION]);
     } else {
+      // A diffuse pair copies the half vector only because x_{k+1} is glossy.
+      *glossy_next_only = diffuse_pair;
       ok = shift_half_vector(x->wo, x->wi, x->transmitted, x->eta, y->wo, y->b.eta.x, &wiy, &jac);
       if (ok) {
         *wi_world = frame_to_world(&y->frame, wiy);
@@ -136,3 +141,9 @@ inline int shift_offset(int shift, const ShiftBase* x, const ShiftNext* next, co
   if (!reason && !shift_prefix_finite(o)) reason = GPT_COUNTER_FAIL_NONFINITE;
   return reason;
 }
+
+// The shift must be its own reverse. An offset that copied the half vector from a pair of
+// diffuse vertices (because the base's next vertex is glossy) and then hit a diffuse vertex would,
+// taken as a base, be reconnected to that vertex by the reverse shift instead of being shifted
+// back to the base: the two are no pair, so the offset fails and its base takes the full weight.
+inline int shift_reverses_at(const Bsdf* b_next, float threshold) { return !is_diffuse(b_next, threshold); }

@@ -47,13 +47,14 @@ __kernel void shift_reconnect_jacobian(uint count, __global const float4* in, __
   out[i] = reconnect_jacobian(in[4 * i].xyz, in[4 * i + 1].xyz, in[4 * i + 2].xyz, normalize(in[4 * i + 3].xyz));
 }
 
-// gpt_weight of the four techniques of a pair: out[i] = their sum.
-__kernel void shift_weights_sum(uint count, __global const float4* pdfs, __global const float* ratio,
+// The gpt_weight of every way a path x is found, summed: by BSDF sampling (pdf p.x) and by light
+// sampling (p.y) as a base, and as the offset of the partner each technique's shift pairs it
+// with (ratios p(y)|J| / p(x): ratio.x under BSDF sampling, ratio.y under light sampling).
+__kernel void shift_weights_sum(uint count, __global const float2* pdfs, __global const float2* ratio,
                                 __global float* out) {
   uint i = get_global_id(0);
   if (i >= count) return;
-  float4 p = pdfs[i];  // base: sampled p.x, other p.y; offset's own: p.z, p.w
-  float r = ratio[i];  // p(y)|J| / p(x)
-  out[i] = gpt_weight(p.x, p.y, r, p.z, p.w) + gpt_weight(p.y, p.x, r, p.w, p.z) +
-           gpt_weight(p.z, p.w, 1.0f / r, p.x, p.y) + gpt_weight(p.w, p.z, 1.0f / r, p.y, p.x);
+  float2 p = pdfs[i], r = ratio[i];
+  out[i] = gpt_weight(p.x, p.y, r.x) + gpt_weight(p.y, p.x, r.y) + gpt_weight(p.x, p.y, 1.0f / r.x) +
+           gpt_weight(p.y, p.x, 1.0f / r.y);
 }

@@ -1,7 +1,8 @@
 // G-PT is unbiased: its gradients (plus the difference of the directly seen emission, which is
 // kept out of the gradients) and its primal agree with neighbour differences and pixels of the
-// path tracer. K independent runs (seeds 1..K) of each; per 4x4 pixel block, Welch's t-test on
-// the run means; Šidák-corrected so each scene/shift case has a false-positive rate of 1e-3.
+// path tracer. K independent runs (seeds 1..K) of each; per 4x4 pixel block, and for the primal
+// also over the whole image (a bias of one sign spread over many blocks), Welch's t-test on the
+// run means; Šidák-corrected so each scene/shift case has a false-positive rate of 1e-3.
 #include <gtest/gtest.h>
 
 #include "integrators/gpt/gradient_path_tracer.h"
@@ -16,8 +17,9 @@ namespace {
 // Paths of up to 8 segments, so Russian roulette (from the 5th bounce) decides some of them.
 constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4, kMaxDepth = 8;
 
-struct Stat {  // per run, per block: sums of dx, dy and of the primal
+struct Stat {  // per run, per block: sums of dx, dy and of the primal; and the primal's total
   std::vector<double> dx, dy, primal;
+  double total = 0;
 };
 
 Stat block_sums(int w, int h, const std::vector<float>& dx, const std::vector<float>& dy,
@@ -32,6 +34,7 @@ Stat block_sums(int w, int h, const std::vector<float>& dx, const std::vector<fl
         if (x + 1 < w) s.dx[b] += dx[i];
         if (y + 1 < h) s.dy[b] += dy[i];
         s.primal[b] += primal[i];
+        s.total += primal[i];
       }
     }
   }
@@ -53,7 +56,7 @@ void differences(int w, int h, const std::vector<float>& img, std::vector<float>
   }
 }
 
-void expect_unbiased(Scene scene, const std::string& scene_file, int shift) {
+void expect_unbiased(Scene scene, const std::string& scene_file, int shift, int spp = kSpp) {
   const int w = kWidth;
   const int h = std::max(kBlock, (kWidth * scene.camera.height / scene.camera.width) / kBlock * kBlock);
   scene.camera.width = w;
@@ -66,7 +69,7 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift) {
   std::vector<Stat> a, b;
   for (int k = 0; k < kRuns; ++k) {
     RenderSettings s;
-    s.spp = kSpp;
+    s.spp = spp;
     s.seed = 1 + k;
     s.max_depth = kMaxDepth;
     GradientImages g = gpt.render_gradients(s);
@@ -85,7 +88,7 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift) {
     b.push_back(block_sums(w, h, pdx, pdy, img));
   }
   const int blocks = static_cast<int>(a[0].dx.size());
-  const double alpha = test::sidak(1e-3, 3 * blocks);
+  const double alpha = test::sidak(1e-3, 3 * blocks + 1);
   auto column = [](const std::vector<Stat>& runs, std::vector<double> Stat::*field, int blk) {
     std::vector<double> v;
     for (const Stat& s : runs) v.push_back((s.*field)[blk]);
@@ -99,6 +102,10 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift) {
     EXPECT_GT(test::welch_p(column(a, &Stat::primal, blk), column(b, &Stat::primal, blk)), alpha)
         << scene_file << " block " << blk << ": the primal differs from path tracing";
   }
+  std::vector<double> ta, tb;
+  for (const Stat& st : a) ta.push_back(st.total);
+  for (const Stat& st : b) tb.push_back(st.total);
+  EXPECT_GT(test::welch_p(ta, tb), alpha) << scene_file << ": the primal's image total differs from path tracing";
 }
 
 void expect_unbiased(const std::string& scene_file, int shift) {
@@ -119,5 +126,19 @@ namespace gdr {
 namespace {
 TEST(GptUnbiased, EnvironmentMapHybrid) { expect_unbiased(test::envmap_scene(), "envmap scene", GPT_SHIFT_HYBRID); }
 TEST(GptUnbiased, EnvironmentMapReplay) { expect_unbiased(test::envmap_scene(), "envmap scene", GPT_SHIFT_REPLAY); }
+// Smooth plastic: its delta coating lobe makes its vertices glossy for the shifts, yet its
+// diffuse lobe takes light samples. Under BSDF sampling a pair follows the half-vector copy (or
+// the replayed sample), under light sampling the reconnection to the light point: two different
+// partners, with unrelated sky pdfs in this scene (support/envmap_scene.h, seed 7). Weights that
+// pool the pair's pdfs over both techniques bias the primal's total here by +3.0% (hybrid) and
+// +1.3% (replay): with 32 samples per pixel and run, 7.6 and 5.3 standard errors, against 4.3
+// for the case's 1e-3 false-positive rate.
+constexpr int kPlasticSpp = 32;
+TEST(GptUnbiased, SmoothPlasticHybrid) {
+  expect_unbiased(test::plastic_sphere_scene(), "plastic sphere scene", GPT_SHIFT_HYBRID, kPlasticSpp);
+}
+TEST(GptUnbiased, SmoothPlasticReplay) {
+  expect_unbiased(test::plastic_sphere_scene(), "plastic sphere scene", GPT_SHIFT_REPLAY, kPlasticSpp);
+}
 }  // namespace
 }  // namespace gdr
