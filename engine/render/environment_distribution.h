@@ -1,6 +1,7 @@
-// Sampling tables for environment maps: a piecewise-constant 2D distribution over the lat-long
-// texels, proportional to luminance * sin(theta), so next-event estimation aims at bright parts
-// of the sky. The kernels read them (kernels/light/lights.h: environment_sample / _pdf).
+// Sampling tables for environment maps: the weights of the map's sample grid (luminance times
+// the mean sine of each row's band of latitudes) and their cdfs, so that next-event estimation
+// draws directions from the bilinear interpolation of those weights (about in proportion to the
+// map's radiance). The kernels read them (kernels/light/envmap.h).
 #pragma once
 #include <vector>
 

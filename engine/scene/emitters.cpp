@@ -110,7 +110,8 @@ void load_emitter(LoadContext& ctx, const XmlNode& node) {
     }
     std::string path = ctx.doc.resolve(p.get_string("filename", ""), *fn);
     GdrLight l = base_light(LIGHT_ENVMAP);
-    l.texture = load_image_texture(ctx, path, *fn, false, true);
+    // Mitsuba pads maps to at least 2 x 3 texels, so that a row lies between the poles.
+    l.texture = load_image_texture(ctx, path, *fn, false, true, 2, 3);
     set4(l.radiance, Rgb(static_cast<float>(scale)));
     // Only the rotation matters for a distant light: drop the translation.
     Mat4d rot = to_world;

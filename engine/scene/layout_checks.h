@@ -9,4 +9,4 @@ static_assert(sizeof(GdrTexture) == 4 * (4 + 8 + 6 + 2), "GdrTexture layout chan
 static_assert(sizeof(GdrLight) == 4 * (4 + 12 + 4 + 24), "GdrLight layout changed");
 static_assert(sizeof(GdrTriangle) == 16, "GdrTriangle layout changed");
 static_assert(sizeof(GdrShape) == 32, "GdrShape layout changed");
-static_assert(sizeof(GdrCamera) == 4 * (12 + 8), "GdrCamera layout changed");
+static_assert(sizeof(GdrCamera) == 4 * (12 + 9), "GdrCamera layout changed");

@@ -21,6 +21,7 @@ struct LoadContext {
   std::set<const XmlNode*> attached_emitters;  // area emitters used by a shape
   std::set<const XmlNode*> reported;           // elements already warned about
   int default_material = -1;
+  int black_material = -1;
   size_t degenerate_triangles = 0;
   bool has_sensor = false;
 
@@ -34,8 +35,11 @@ struct LoadContext {
 // The pieces, one file each.
 int load_material(LoadContext& ctx, const XmlNode& bsdf);  // material index (cached per element)
 int default_material(LoadContext& ctx);                    // Mitsuba's default: diffuse 0.5
+int black_material(LoadContext& ctx);  // an emitting shape's default: diffuse 0 (Mitsuba's)
 int load_texture(LoadContext& ctx, const XmlNode& texture);  // texture index, or -1 if unsupported
-int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear);
+// A bitmap smaller than min_width x min_height is padded by repeating its last column and row.
+int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear,
+                       int min_width = 1, int min_height = 1);
 // Fills a 4-float slot of the shared layouts (RGB or xyz, then 0).
 inline void set4(float* dst, Rgb c) {
   dst[0] = c.r;

@@ -228,4 +228,15 @@ int default_material(LoadContext& ctx) {
   return ctx.default_material;
 }
 
+int black_material(LoadContext& ctx) {
+  if (ctx.black_material < 0) {
+    ctx.black_material = static_cast<int>(ctx.scene.materials.size());
+    GdrMaterial m = base_material(BSDF_DIFFUSE);
+    set4(m.reflectance, Rgb(0.0f));
+    ctx.scene.materials.push_back(m);
+    ctx.scene.material_names.push_back("default black diffuse (emitter without a BSDF)");
+  }
+  return ctx.black_material;
+}
+
 }  // namespace gdr

@@ -119,13 +119,15 @@ void load_sensor(LoadContext& ctx, const XmlNode& node) {
   if (!films.empty()) {
     Props f = ctx.props(*films.front());
     // The output file's format is gdrender's own (EXR of 32-bit floats, PNG beside it).
-    f.known({"file_format", "pixel_format", "component_format", "banner", "high_quality_edges", "attach_log"});
+    f.known({"file_format", "pixel_format", "component_format", "banner", "attach_log"});
     cam.width = f.get_int("width", 768);
     cam.height = f.get_int("height", 576);
     if (cam.width <= 0 || cam.height <= 0 || cam.width > 65536 || cam.height > 65536) {
       throw InputError(films.front()->file, films.front()->line, "film size must be between 1 and 65536 pixels");
     }
     read_filter(ctx, *films.front(), cam);
+    // Mitsuba 3's sample_border, Mitsuba 0.6's highQualityEdges; false in both.
+    cam.sample_border = f.get_bool("sample_border", f.get_bool("high_quality_edges", false)) ? 1 : 0;
   } else {
     cam.filter = FILTER_GAUSSIAN;
     cam.filter_radius = 2.0f;

@@ -30,6 +30,9 @@ bool read_mesh(LoadContext& ctx, const Props& p, MeshData* mesh, Mat4d* to_world
     *mesh = read_obj(mesh_path(ctx, p), p.get_bool("flip_tex_coords", true));
   } else if (type == "ply") {
     *mesh = read_ply(mesh_path(ctx, p));
+    // Mitsuba 3's PLY reader flips v only when asked (its OBJ reader does by default).
+    if (p.get_bool("flip_tex_coords", false))
+      for (size_t i = 1; i < mesh->uvs.size(); i += 2) mesh->uvs[i] = 1.0f - mesh->uvs[i];
   } else if (type == "serialized") {
     *mesh = read_serialized(mesh_path(ctx, p), p.get_int("shape_index", 0));
   } else if (type == "rectangle") {
@@ -114,23 +117,27 @@ void load_shape(LoadContext& ctx, const XmlNode& node) {
     s.triangles.push_back(tri);
   }
 
-  std::vector<const XmlNode*> bsdfs = p.nested("bsdf");
-  if (bsdfs.size() > 1) ctx.unsupported(*bsdfs[1], "a shape takes one BSDF: only the first is used");
-  shape.material = bsdfs.empty() ? default_material(ctx) : load_material(ctx, *bsdfs.front());
-  s.shapes.push_back(shape);
-  s.shape_names.push_back(shape_name(node));
-
-  bool has_area = false;
+  // The area emitter first: a shape that emits and has no BSDF is black (Mitsuba 0.x and 3).
+  const XmlNode* area = nullptr;
   for (const XmlNode* e : p.nested("emitter")) {
     if (e->type() != "area") {
       ctx.unsupported(*e, "only area emitters can be attached to a shape: ignored");
-    } else if (has_area) {
+    } else if (area) {
       ctx.unsupported(*e, "a shape takes one area emitter: ignored");
     } else {
-      has_area = true;
-      ctx.attached_emitters.insert(e);
-      add_area_lights(ctx, *e, shape_index);
+      area = e;
     }
+  }
+  std::vector<const XmlNode*> bsdfs = p.nested("bsdf");
+  if (bsdfs.size() > 1) ctx.unsupported(*bsdfs[1], "a shape takes one BSDF: only the first is used");
+  shape.material = !bsdfs.empty() ? load_material(ctx, *bsdfs.front())
+                   : area         ? black_material(ctx)
+                                  : default_material(ctx);
+  s.shapes.push_back(shape);
+  s.shape_names.push_back(shape_name(node));
+  if (area) {
+    ctx.attached_emitters.insert(area);
+    add_area_lights(ctx, *area, shape_index);
   }
 }
 

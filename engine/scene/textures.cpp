@@ -1,4 +1,5 @@
 // Textures: `bitmap` (through OpenImageIO, stored as linear RGB texels) and `checkerboard`.
+#include <algorithm>
 #include <cmath>
 
 #include "image/image_io.h"
@@ -26,7 +27,8 @@ void read_uv_transform(const Props& p, GdrTexture& t) {
 
 }  // namespace
 
-int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear) {
+int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode& from, bool raw, bool bilinear,
+                       int min_width, int min_height) {
   bool integer_format = false;
   Image image;
   try {
@@ -38,17 +40,9 @@ int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode&
   const std::vector<float>& pixels = image.pixels;
   // 8- and 16-bit images hold sRGB-encoded values unless the scene says they are raw data.
   bool decode = !raw && integer_format;
-  ctx.scene.texels.reserve(ctx.scene.texels.size() + static_cast<size_t>(w) * h);
-
-  GdrTexture t{};
-  t.type = TEXTURE_BITMAP;
-  t.width = w;
-  t.height = h;
-  t.offset = static_cast<int>(ctx.scene.texels.size());
-  t.bilinear = bilinear ? 1 : 0;
-  identity_uv(t);
   size_t non_finite = 0, negative = 0;
-  for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
+  std::vector<Vec4> texels(static_cast<size_t>(w) * h);
+  for (size_t i = 0; i < texels.size(); ++i) {
     const float* px = &pixels[i * nc];
     float c[3] = {px[0], nc >= 3 ? px[1] : px[0], nc >= 3 ? px[2] : px[0]};
     for (float& v : c) {
@@ -61,10 +55,23 @@ int load_image_texture(LoadContext& ctx, const std::string& path, const XmlNode&
       }
       if (decode) v = srgb_to_linear(v);
     }
-    ctx.scene.texels.push_back({c[0], c[1], c[2], nc == 4 || nc == 2 ? px[nc - 1] : 1.0f});
+    texels[i] = {c[0], c[1], c[2], nc == 4 || nc == 2 ? px[nc - 1] : 1.0f};
   }
   if (non_finite) ctx.warn(path + ": " + std::to_string(non_finite) + " non-finite texel values replaced by 0");
   if (negative) ctx.warn(path + ": " + std::to_string(negative) + " negative texel values replaced by 0");
+
+  GdrTexture t{};
+  t.type = TEXTURE_BITMAP;
+  t.width = std::max(w, min_width);
+  t.height = std::max(h, min_height);
+  t.offset = static_cast<int>(ctx.scene.texels.size());
+  t.bilinear = bilinear ? 1 : 0;
+  identity_uv(t);
+  // Padding repeats the last column, then the last row (Mitsuba's Bitmap::pad_to).
+  ctx.scene.texels.reserve(ctx.scene.texels.size() + static_cast<size_t>(t.width) * t.height);
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x)
+      ctx.scene.texels.push_back(texels[static_cast<size_t>(std::min(y, h - 1)) * w + std::min(x, w - 1)]);
   ctx.scene.textures.push_back(t);
   return static_cast<int>(ctx.scene.textures.size()) - 1;
 }

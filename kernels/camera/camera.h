@@ -1,25 +1,78 @@
 // Camera rays: Mitsuba's perspective camera (looks along +z, +x left, +y up) with the pixel
 // filter importance-sampled, so every sample has weight 1 and lands in its own pixel only.
+// Sampling the filter cut to the image converges to what Mitsuba's splatting gives: its samples
+// lie uniformly on the sampled region and each pixel divides its filter-weighted sum by the sum
+// of its weights, so both tend to the filter-weighted mean over the region.
 #pragma once
 #include "core/geometry.h"
 #include "shared/scene_types.h"
 
-// Offset from the pixel centre drawn from the filter's distribution (in pixels).
-inline float2 sample_filter(int filter, float radius, float2 u) {
-  if (filter == FILTER_TENT) {
-    float2 r;
-    r.x = u.x < 0.5f ? -radius + radius * sqrt(2.0f * u.x) : radius - radius * sqrt(2.0f - 2.0f * u.x);
-    r.y = u.y < 0.5f ? -radius + radius * sqrt(2.0f * u.y) : radius - radius * sqrt(2.0f - 2.0f * u.y);
-    return r;
-  }
+// Pixel filters as Mitsuba defines them, one axis at a time (the 2D filter is the product of
+// its two axes): box 1, tent 1 - |t| / r, gaussian exp(-t^2 / 2 s^2) - exp(-r^2 / 2 s^2) with
+// r = 4 s, all on [-r, r]. filter_cdf is the filter's integral from -r to t.
+inline float gaussian_tail(float r, float t) {  // integral over [t, r], 0 <= t <= r
+  float sigma = 0.25f * r, k = M_SQRT1_2_F / sigma;
+  const float sqrt_half_pi = 1.2533141f, bias = exp(-8.0f);
+  return fmax(sigma * sqrt_half_pi * (erfc(t * k) - erfc(r * k)) - bias * (r - t), 0.0f);
+}
+
+inline float filter_cdf(int filter, float r, float t) {
+  t = clamp(t, -r, r);
+  if (filter == FILTER_TENT) return t <= 0.0f ? (t + r) * (t + r) / (2.0f * r) : r - (r - t) * (r - t) / (2.0f * r);
+  // erfc keeps the tails accurate where erf would cancel.
+  if (filter == FILTER_GAUSSIAN) return t <= 0.0f ? gaussian_tail(r, -t) : 2.0f * gaussian_tail(r, 0.0f) - gaussian_tail(r, t);
+  return t + r;
+}
+
+inline float filter_eval(int filter, float r, float t) {
+  if (fabs(t) > r) return 0.0f;
+  if (filter == FILTER_TENT) return 1.0f - fabs(t) / r;
   if (filter == FILTER_GAUSSIAN) {
-    // Box-Muller with stddev = radius / 4 (Mitsuba truncates at 4 sigma; the tail is < 1e-3).
-    float sigma = 0.25f * radius;
-    float rr = sigma * sqrt(-2.0f * log(fmax(1.0f - u.x, 1e-12f)));
-    float phi = 2.0f * M_PI_F * u.y;
-    return (float2)(rr * cos(phi), rr * sin(phi));
+    float sigma = 0.25f * r;
+    return fmax(exp(-t * t / (2.0f * sigma * sigma)) - exp(-8.0f), 0.0f);
   }
-  return (float2)((2.0f * u.x - 1.0f) * radius, (2.0f * u.y - 1.0f) * radius);
+  return 1.0f;
+}
+
+// The filter's mass over the offsets [range.x, range.y] a pixel may sample.
+inline float filter_mass(int filter, float r, float2 range) {
+  return filter_cdf(filter, r, range.y) - filter_cdf(filter, r, range.x);
+}
+
+// An offset drawn from the filter restricted to [range.x, range.y] (inside [-r, r]), by
+// inverting its cdf: closed forms for box and tent, bracketed Newton steps for the gaussian.
+inline float sample_filter_axis(int filter, float r, float2 range, float u) {
+  float lo = range.x, hi = range.y;
+  if (filter == FILTER_BOX) return clamp(mix(lo, hi, u), lo, hi);
+  float target = mix(filter_cdf(filter, r, lo), filter_cdf(filter, r, hi), u);
+  float t;
+  if (filter == FILTER_TENT) {
+    t = target <= 0.5f * r ? -r + sqrt(2.0f * r * target) : r - sqrt(fmax(2.0f * r * (r - target), 0.0f));
+  } else {
+    t = clamp(0.0f, lo, hi);
+    for (int i = 0; i < 32; ++i) {
+      float e = filter_cdf(filter, r, t) - target;
+      if (e > 0.0f) hi = t;
+      else lo = t;
+      float d = filter_eval(filter, r, t), next = t - e / d;
+      if (!(d > 0.0f) || !(next >= lo && next <= hi)) next = 0.5f * (lo + hi);
+      float step = fabs(next - t);
+      t = next;
+      if (step <= 1e-6f * r) break;
+    }
+  }
+  return clamp(t, range.x, range.y);
+}
+
+// The film offsets, from the centre of pixel p of an axis of `size` pixels, that its filter
+// sample may take: the filter's support, cut at the image's edges unless the film samples its
+// border (Mitsuba's sample_border, default false: no sample is taken outside the image, and
+// a border pixel is the filter-weighted mean over the part of its footprint inside it).
+inline float2 filter_range(const GdrCamera* cam, int p, int size) {
+  float r = cam->filter_radius;
+  if (cam->sample_border) return (float2)(-r, r);
+  float centre = (float)p + 0.5f;
+  return (float2)(fmax(-r, -centre), fmin(r, (float)size - centre));
 }
 
 // The ray through film position (fx, fy) in pixels from the top-left corner.

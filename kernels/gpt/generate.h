@@ -17,7 +17,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   uint pixel = params.path.first_pixel + g;
   int px = (int)(pixel % (uint)params.path.width), py = (int)(pixel / (uint)params.path.width);
   PathSampler ps = path_sampler(params.path.seed, pixel, params.path.sample);
-  float2 jitter = camera_jitter(&cam, &ps);
+  float2 jitter = camera_jitter(&cam, &ps, px, py);
   CameraRay r = camera_sample(&cam, px, py, jitter);
   write_camera_ray(&base_rays[g], &r, g);
   GptBaseState b;
@@ -35,12 +35,20 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     os.visible = 0;
     os.glossy_next_only = 0;  // the pixel shift holds wherever the offset lands
     int nx = px + OFFSET_PIXEL_DX(k), ny = py + OFFSET_PIXEL_DY(k);
-    if (nx < 0 || ny < 0 || nx >= params.path.width || ny >= params.path.height) {
+    // The pixel shift keeps the film offset: its Jacobian is 1, and the two pixels' film
+    // densities differ only near the image's edges, where the filter is cut (camera_shift_ratio).
+    float q = 0.0f;
+    if (nx >= 0 && ny >= 0 && nx < params.path.width && ny < params.path.height) {
+      q = camera_shift_ratio(&cam, px, py, nx, ny, jitter);
+    }
+    if (!(q > 0.0f) || !isfinite(q)) {
+      // The neighbour is outside the image, or its film sample could not be here.
       kill_offset(&os, counters, GPT_COUNTER_FAIL_OUTSIDE);
     } else {
-      // The pixel shift: the same filter sample, one pixel over (Jacobian 1).
       CameraRay ro = camera_sample(&cam, nx, ny, jitter);
       os.mode = GPT_MODE_TRACE;
+      os.throughput[0] = os.throughput[1] = os.throughput[2] = q;
+      os.ratio = q;
       vstore3(ro.d, 0, os.dir);
       uint slot = atomic_inc(&counters[GPT_COUNTER_OFFSET_RAYS]);
       write_camera_ray(&offset_rays[slot], &ro, g * GPT_OFFSETS + (uint)k);

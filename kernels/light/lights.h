@@ -5,7 +5,7 @@
 #include "core/geometry.h"
 #include "scene/scene_data.h"
 #include "scene/surface.h"
-#include "shared/environment_table.h"
+#include "light/envmap.h"
 
 #if !defined(GDR_LIGHTS_SELECTED)
 #define GDR_LIGHT_AREA 1
@@ -42,17 +42,6 @@ inline int light_select(const SceneData* s, float u) {
   return lo;
 }
 
-// Mitsuba's lat-long map: u from atan2(x, -z), v = theta / pi measured from +y (local frame).
-inline float2 envmap_uv(float3 d) {
-  float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
-  return (float2)(u - floor(u), acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F);
-}
-inline float3 envmap_direction(float2 uv, float* sin_theta) {
-  float theta = M_PI_F * uv.y, phi = 2.0f * M_PI_F * uv.x;
-  *sin_theta = sin(theta);
-  return (float3)(*sin_theta * sin(phi), cos(theta), -*sin_theta * cos(phi));
-}
-
 inline void copy_matrix(__global const float* m, float* out) {
   for (int i = 0; i < 12; ++i) out[i] = m[i];
 }
@@ -64,35 +53,10 @@ inline float3 environment_radiance(const SceneData* s, __global const GdrLight* 
     float to_local[12];
     copy_matrix(l->to_local, to_local);
     float2 uv = envmap_uv(normalize(xform_vector(to_local, dir)));
-    // texture_eval flips v for bitmaps (v = 0 at the bottom); the lat-long map starts at the top.
-    return texture_eval(s, l->texture, (float2)(uv.x, 1.0f - uv.y)) * vload3(0, l->radiance);
+    return envmap_lookup(s, &s->textures[l->texture], uv) * vload3(0, l->radiance);
   }
 #endif
   return vload3(0, l->radiance);
-}
-
-// Index i with cdf[i] <= u < cdf[i + 1] among n intervals, and u rescaled to [0, 1) inside it.
-inline int sample_cdf(__global const float* cdf, int n, float u, float* rescaled) {
-  int lo = 0, hi = n - 1;
-  while (lo < hi) {
-    int mid = (lo + hi) / 2;
-    if (cdf[mid + 1] <= u) lo = mid + 1;
-    else hi = mid;
-  }
-  float width = cdf[lo + 1] - cdf[lo];
-  *rescaled = width > 0.0f ? clamp((u - cdf[lo]) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
-  return lo;
-}
-
-// Envmap sampling tables at l->distribution_offset (layout: shared/environment_table.h), built
-// from luminance * sin(theta).
-inline float envmap_uv_pdf(const SceneData* s, __global const GdrLight* l, float2 uv) {
-  __global const GdrTexture* t = &s->textures[l->texture];
-  int w = t->width, h = t->height;
-  int c = min((int)(uv.x * w), w - 1), r = min((int)(uv.y * h), h - 1);
-  __global const float* rows = s->env_tables + l->distribution_offset;
-  __global const float* cols = rows + env_table_columns_offset(w, h, r);
-  return (rows[r + 1] - rows[r]) * h * (cols[c + 1] - cols[c]) * w;
 }
 
 // Solid-angle pdf of sampling world direction `dir` toward the environment, selection included.
@@ -104,9 +68,12 @@ inline float environment_pdf(const SceneData* s, float3 dir) {
   if (l->type == LIGHT_ENVMAP) {
     float to_local[12];
     copy_matrix(l->to_local, to_local);
-    float2 uv = envmap_uv(normalize(xform_vector(to_local, dir)));
-    float sin_theta = sin(M_PI_F * uv.y);
-    return sin_theta > 0.0f ? pmf * envmap_uv_pdf(s, l, uv) / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
+    float3 d = normalize(xform_vector(to_local, dir));
+    float sin_theta = sqrt(d.x * d.x + d.z * d.z);
+    __global const GdrTexture* t = &s->textures[l->texture];
+    float p = envmap_uv_pdf(s->env_tables + l->distribution_offset, t->width, t->height, envmap_uv(d));
+    // d(solid angle) = 2 pi^2 sin(theta) du dv.
+    return sin_theta > 0.0f ? pmf * p / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
   }
 #endif
   return pmf * GDR_INV_4PI;
@@ -117,12 +84,7 @@ inline float3 environment_sample(const SceneData* s, __global const GdrLight* l,
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     __global const GdrTexture* t = &s->textures[l->texture];
-    __global const float* rows = s->env_tables + l->distribution_offset;
-    float ur, uc;
-    int r = sample_cdf(rows, t->height, u.y, &ur);
-    int c = sample_cdf(rows + env_table_columns_offset(t->width, t->height, r), t->width, u.x, &uc);
-    float sin_theta;
-    float3 d = envmap_direction((float2)((c + uc) / t->width, (r + ur) / t->height), &sin_theta);
+    float3 d = envmap_direction(envmap_sample_uv(s->env_tables + l->distribution_offset, t->width, t->height, u));
     float to_world[12];
     copy_matrix(l->to_world, to_world);
     return normalize(xform_vector(to_world, d));

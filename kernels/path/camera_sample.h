@@ -1,6 +1,6 @@
-// The camera sample of a pixel: an offset drawn from the pixel filter with the camera's random
-// numbers, and the camera ray through the offset position. G-PT traces its four neighbours with
-// the same offset (the pixel shift, Jacobian 1).
+// The camera sample of a pixel: an offset drawn from the pixel filter (cut to the image unless
+// the film samples its border) with the camera's random numbers, and the camera ray through the
+// offset position. G-PT traces its four neighbours with the same offset (the pixel shift).
 #pragma once
 #include "camera/camera.h"
 #include "core/ray_queue.h"
@@ -11,10 +11,25 @@ typedef struct CameraRay {
   float tnear, tfar;
 } CameraRay;
 
-// Offset from the pixel centre (in pixels).
-inline float2 camera_jitter(const GdrCamera* cam, const PathSampler* ps) {
+// Offset from the centre of pixel (x, y) (in pixels).
+inline float2 camera_jitter(const GdrCamera* cam, const PathSampler* ps, int x, int y) {
   float4 u = sampler_block(ps, RNG_BLOCK_CAMERA);
-  return sample_filter(cam->filter, cam->filter_radius, u.xy);
+  float2 rx = filter_range(cam, x, cam->width), ry = filter_range(cam, y, cam->height);
+  return (float2)(sample_filter_axis(cam->filter, cam->filter_radius, rx, u.x),
+                  sample_filter_axis(cam->filter, cam->filter_radius, ry, u.y));
+}
+
+// The pixel shift: pixel (nx, ny) reuses the offset `jitter` of pixel (x, y). Returns the ratio
+// of the two pixels' film densities there, q_n / q_p (the filter cancels, leaving the ratio of
+// the filter masses over the two pixels' ranges; 1 away from the image's edges), or 0 where
+// the offset lies outside the neighbour's range, which its own samples never reach.
+inline float camera_shift_ratio(const GdrCamera* cam, int x, int y, int nx, int ny, float2 jitter) {
+  float2 bx = filter_range(cam, x, cam->width), by = filter_range(cam, y, cam->height);
+  float2 ox = filter_range(cam, nx, cam->width), oy = filter_range(cam, ny, cam->height);
+  if (jitter.x < ox.x || jitter.x > ox.y || jitter.y < oy.x || jitter.y > oy.y) return 0.0f;
+  int f = cam->filter;
+  float r = cam->filter_radius;
+  return (filter_mass(f, r, bx) / filter_mass(f, r, ox)) * (filter_mass(f, r, by) / filter_mass(f, r, oy));
 }
 
 // The ray through pixel (x, y) at offset `jitter` from its centre.

@@ -20,8 +20,9 @@ __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, 
   GdrCamera cam = *camera;
   uint pixel = params.first_pixel + i;
   PathSampler ps = path_sampler(params.seed, pixel, params.sample);
-  float2 jitter = camera_jitter(&cam, &ps);
-  CameraRay r = camera_sample(&cam, (int)(pixel % (uint)cam.width), (int)(pixel / (uint)cam.width), jitter);
+  int px = (int)(pixel % (uint)cam.width), py = (int)(pixel / (uint)cam.width);
+  float2 jitter = camera_jitter(&cam, &ps, px, py);
+  CameraRay r = camera_sample(&cam, px, py, jitter);
   write_camera_ray(&rays[i], &r, i);
   queue[i] = i;
   paths[i] = path_start(pixel, params.sample);

@@ -19,9 +19,10 @@ inline float3 texture_eval(const SceneData* s, int index, float2 uv) {
     return ((cu + cv) & 1) ? vload3(0, t->color1) : vload3(0, t->color0);
   }
   if (!isfinite(u) || !isfinite(v)) return (float3)(0.0f);
-  // Bitmaps: v = 0 is the bottom row of the image (Mitsuba's convention).
+  // Bitmaps: v = 0 is the file's first (top) row, as in Mitsuba (0.x and 3); OBJ meshes flip
+  // their v on loading (flip_tex_coords) so that their textures appear upright.
   float x = (u - floor(u)) * t->width;
-  float y = (1.0f - (v - floor(v))) * t->height;
+  float y = (v - floor(v)) * t->height;
   if (!t->bilinear) return bitmap_texel(s, t, (int)x, (int)y);
   x -= 0.5f;
   y -= 0.5f;

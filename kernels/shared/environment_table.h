@@ -1,9 +1,21 @@
 // Layout of an environment map's sampling table, built by the host
-// (engine/render/environment_distribution.cpp) and read by the kernels (kernels/light/lights.h),
-// at the light's distribution_offset in the scene's env_tables buffer: the cdf over the rows
-// (height + 1 values, 0 ... 1), then for each row the cdf over its columns (width + 1 values).
+// (engine/render/environment_distribution.cpp) and read by the kernels (kernels/light/envmap.h),
+// at the light's distribution_offset in the scene's env_tables buffer. The sampled density is
+// the bilinear interpolation, over the map's sample grid (kernels/light/envmap.h), of the
+// normalised weights f[r][c] (luminance times the mean sine of the row's band); the table holds:
+//   the cdf over the height - 1 bands between rows (height values, 0 ... 1),
+//   each row's sum of weights (height values),
+//   for each row the cdf over the width intervals between its columns, the last interval
+//   wrapping to column 0 (width + 1 values, 0 ... 1),
+//   for each row its weights (width values).
 #pragma once
 
-inline int env_table_columns_offset(int width, int height, int row) { return (height + 1) + row * (width + 1); }
+inline int env_table_row_sums_offset(int height) { return height; }
 
-inline int env_table_size(int width, int height) { return env_table_columns_offset(width, height, height); }
+inline int env_table_columns_offset(int width, int height, int row) { return 2 * height + row * (width + 1); }
+
+inline int env_table_weights_offset(int width, int height, int row) {
+  return env_table_columns_offset(width, height, height) + row * width;
+}
+
+inline int env_table_size(int width, int height) { return env_table_weights_offset(width, height, height); }

@@ -112,4 +112,5 @@ typedef struct GdrCamera {
   int height;
   int filter;           // FILTER_*
   float filter_radius;  // in pixels
+  int sample_border;    // 1: film samples may lie outside the image (Mitsuba's sample_border)
 } GdrCamera;

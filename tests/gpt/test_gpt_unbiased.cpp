@@ -1,8 +1,10 @@
 // G-PT is unbiased: its gradients (plus the difference of the directly seen emission, which is
 // kept out of the gradients) and its primal agree with neighbour differences and pixels of the
-// path tracer. K independent runs (seeds 1..K) of each; per 4x4 pixel block, and for the primal
-// also over the whole image (a bias of one sign spread over many blocks), Welch's t-test on the
-// run means; Šidák-corrected so each scene/shift case has a false-positive rate of 1e-3.
+// path tracer. K independent runs (seeds 1..K) of each; per 4x4 pixel block, for the primal
+// also over the whole image (a bias of one sign spread over many blocks), and over the image's
+// outer ring of pixels (where the pixel filter is cut at the edge and the pixel shift has a
+// Jacobian), Welch's t-test on the run means; Šidák-corrected so each scene/shift case has a
+// false-positive rate of 1e-3.
 #include <gtest/gtest.h>
 
 #include "integrators/gpt/gradient_path_tracer.h"
@@ -17,9 +19,10 @@ namespace {
 // Paths of up to 8 segments, so Russian roulette (from the 5th bounce) decides some of them.
 constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4, kMaxDepth = 8;
 
-struct Stat {  // per run, per block: sums of dx, dy and of the primal; and the primal's total
+struct Stat {  // per run, per block: sums of dx, dy and of the primal; the primal's total; the border
   std::vector<double> dx, dy, primal;
   double total = 0;
+  double border_dx = 0, border_dy = 0, border_primal = 0;
 };
 
 Stat block_sums(int w, int h, const std::vector<float>& dx, const std::vector<float>& dy,
@@ -35,6 +38,17 @@ Stat block_sums(int w, int h, const std::vector<float>& dx, const std::vector<fl
         if (y + 1 < h) s.dy[b] += dy[i];
         s.primal[b] += primal[i];
         s.total += primal[i];
+      }
+    }
+  }
+  // The differences that involve a border pixel, and the border pixels themselves.
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        size_t i = 3 * (size_t(y) * w + x) + c;
+        if (x == 0 || x == w - 2) s.border_dx += dx[i];
+        if (y == 0 || y == h - 2) s.border_dy += dy[i];
+        if (x == 0 || y == 0 || x == w - 1 || y == h - 1) s.border_primal += primal[i];
       }
     }
   }
@@ -88,7 +102,7 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift, int 
     b.push_back(block_sums(w, h, pdx, pdy, img));
   }
   const int blocks = static_cast<int>(a[0].dx.size());
-  const double alpha = test::sidak(1e-3, 3 * blocks + 1);
+  const double alpha = test::sidak(1e-3, 3 * blocks + 4);
   auto column = [](const std::vector<Stat>& runs, std::vector<double> Stat::*field, int blk) {
     std::vector<double> v;
     for (const Stat& s : runs) v.push_back((s.*field)[blk]);
@@ -106,6 +120,17 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift, int 
   for (const Stat& st : a) ta.push_back(st.total);
   for (const Stat& st : b) tb.push_back(st.total);
   EXPECT_GT(test::welch_p(ta, tb), alpha) << scene_file << ": the primal's image total differs from path tracing";
+  auto border = [](const std::vector<Stat>& runs, double Stat::*field) {
+    std::vector<double> v;
+    for (const Stat& s : runs) v.push_back(s.*field);
+    return v;
+  };
+  EXPECT_GT(test::welch_p(border(a, &Stat::border_dx), border(b, &Stat::border_dx)), alpha)
+      << scene_file << ": dx at the border is biased";
+  EXPECT_GT(test::welch_p(border(a, &Stat::border_dy), border(b, &Stat::border_dy)), alpha)
+      << scene_file << ": dy at the border is biased";
+  EXPECT_GT(test::welch_p(border(a, &Stat::border_primal), border(b, &Stat::border_primal)), alpha)
+      << scene_file << ": the primal of the border pixels differs from path tracing";
 }
 
 void expect_unbiased(const std::string& scene_file, int shift) {

@@ -76,22 +76,37 @@ TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
   }
 }
 
-// The environment tables follow their shared layout: each cdf starts at 0 and ends at 1.
+// The environment tables follow their shared layout: each cdf starts at 0 and ends at 1, the
+// row sums are those of the rows' weights, and the bilinear interpolant of the weights
+// integrates to 1 over the grid (each band between rows the mean of its two rows' sums).
 TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   Scene scene = test::envmap_scene();
   SceneArrays a = scene_arrays(test::default_context(), scene);
   const GdrLight& env = a.lights.back();
   ASSERT_EQ(env.type, LIGHT_ENVMAP);
   const GdrTexture& t = a.textures[env.texture];
-  ASSERT_EQ(a.env_tables.size(), size_t(env.distribution_offset + env_table_size(t.width, t.height)));
-  const float* rows = &a.env_tables[env.distribution_offset];
-  EXPECT_EQ(rows[0], 0.0f);
-  EXPECT_EQ(rows[t.height], 1.0f);
-  for (int r = 0; r < t.height; ++r) {
-    const float* cols = rows + env_table_columns_offset(t.width, t.height, r);
+  const int w = t.width, h = t.height;
+  ASSERT_EQ(a.env_tables.size(), size_t(env.distribution_offset + env_table_size(w, h)));
+  const float* table = &a.env_tables[env.distribution_offset];
+  EXPECT_EQ(table[0], 0.0f);
+  EXPECT_EQ(table[h - 1], 1.0f);
+  const float* sums = table + env_table_row_sums_offset(h);
+  double integral = 0;
+  for (int r = 0; r < h; ++r) {
+    const float* cols = table + env_table_columns_offset(w, h, r);
     EXPECT_EQ(cols[0], 0.0f) << "row " << r;
-    EXPECT_EQ(cols[t.width], 1.0f) << "row " << r;
+    EXPECT_EQ(cols[w], 1.0f) << "row " << r;
+    const float* f = table + env_table_weights_offset(w, h, r);
+    double sum = 0;
+    for (int c = 0; c < w; ++c) {
+      EXPECT_GE(f[c], 0.0f);
+      sum += f[c];
+    }
+    EXPECT_NEAR(sums[r], sum, 1e-5) << "row " << r;
+    if (r + 1 < h) integral += 0.5 * sums[r];
+    if (r > 0) integral += 0.5 * sums[r];
   }
+  EXPECT_NEAR(integral, 1.0, 1e-5);
 }
 
 }  // namespace

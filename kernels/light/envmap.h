@@ -1,0 +1,116 @@
+// Mitsuba 3's latitude-longitude environment map (src/emitters/envmap.cpp): its lookup and an
+// importance sampler whose pdf is exactly the density it samples.
+//
+// The map's texels are samples on a grid: column c at u = (c + 1/2) / W, wrapping around in phi;
+// row r at v = r / (H - 1), so the first and last rows lie on the poles. Radiance is the bilinear
+// interpolation of the four samples around (u, v). The sampler draws from the same bilinear
+// interpolation of the table's weights (shared/environment_table.h): a band between two rows by
+// its mass, v inside it from the linear marginal, one of the band's two rows by its share at that
+// v, a column interval from that row's cdf and u inside it from the linear density there.
+#pragma once
+#include "core/math.h"
+#include "scene/scene_data.h"
+#include "shared/environment_table.h"
+
+// u from atan2(x, -z), v = theta / pi measured from +y (local frame).
+inline float2 envmap_uv(float3 d) {
+  float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
+  return (float2)(u - floor(u), acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F);
+}
+inline float3 envmap_direction(float2 uv) {
+  float theta = M_PI_F * uv.y, phi = 2.0f * M_PI_F * uv.x;
+  float sin_theta = sin(theta);
+  return (float3)(sin_theta * sin(phi), cos(theta), -sin_theta * cos(phi));
+}
+
+// The four grid samples around (u, v): columns c0, c1 = c0 + 1 (wrapped) with weight fc on c1,
+// rows r0, r0 + 1 with weight fr on r0 + 1. Needs w >= 1, h >= 2 (the loader pads smaller maps).
+typedef struct EnvGridCell {
+  int c0, c1, r0;
+  float fc, fr;
+} EnvGridCell;
+
+inline EnvGridCell envmap_cell(float2 uv, int w, int h) {
+  EnvGridCell g;
+  float x = uv.x * (float)w - 0.5f;
+  x -= floor(x / (float)w) * (float)w;  // [0, w)
+  g.c0 = min((int)x, w - 1);
+  g.fc = clamp(x - (float)g.c0, 0.0f, 1.0f);
+  g.c1 = g.c0 + 1 == w ? 0 : g.c0 + 1;
+  float y = clamp(uv.y, 0.0f, 1.0f) * (float)(h - 1);
+  g.r0 = min((int)y, h - 2);
+  g.fr = clamp(y - (float)g.r0, 0.0f, 1.0f);
+  return g;
+}
+
+inline float3 envmap_texel(const SceneData* s, __global const GdrTexture* t, int c, int r) {
+  return s->texels[t->offset + r * t->width + c].xyz;
+}
+
+// Radiance of the map (before its scale) at lat-long position uv.
+inline float3 envmap_lookup(const SceneData* s, __global const GdrTexture* t, float2 uv) {
+  if (!isfinite(uv.x) || !isfinite(uv.y)) return (float3)(0.0f);
+  EnvGridCell g = envmap_cell(uv, t->width, t->height);
+  float3 top = mix(envmap_texel(s, t, g.c0, g.r0), envmap_texel(s, t, g.c1, g.r0), g.fc);
+  float3 bottom = mix(envmap_texel(s, t, g.c0, g.r0 + 1), envmap_texel(s, t, g.c1, g.r0 + 1), g.fc);
+  return mix(top, bottom, g.fr);
+}
+
+// A sample of the density proportional to (1 - t) a + t b on [0, 1) (a, b >= 0), by its
+// inverse cdf in a form without cancellation (pbrt-v4's SampleLinear).
+inline float sample_linear(float u, float a, float b) {
+  if (!(a + b > 0.0f)) return u;
+  if (u == 0.0f && a == 0.0f) return 0.0f;
+  float x = u * (a + b) / (a + sqrt(mix(a * a, b * b, u)));
+  return fmin(x, 0x1.fffffep-1f);
+}
+
+// Index i with cdf[i] <= u < cdf[i + 1] among n intervals, and u rescaled to [0, 1) inside it.
+inline int sample_cdf(__global const float* cdf, int n, float u, float* rescaled) {
+  int lo = 0, hi = n - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (cdf[mid + 1] <= u) lo = mid + 1;
+    else hi = mid;
+  }
+  float width = cdf[lo + 1] - cdf[lo];
+  *rescaled = width > 0.0f ? clamp((u - cdf[lo]) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
+  return lo;
+}
+
+// Density, per unit u and v, with which envmap_sample_uv draws uv.
+inline float envmap_uv_pdf(__global const float* table, int w, int h, float2 uv) {
+  if (!isfinite(uv.x) || !isfinite(uv.y)) return 0.0f;
+  EnvGridCell g = envmap_cell(uv, w, h);
+  __global const float* f0 = table + env_table_weights_offset(w, h, g.r0);
+  __global const float* f1 = table + env_table_weights_offset(w, h, g.r0 + 1);
+  float top = mix(f0[g.c0], f0[g.c1], g.fc), bottom = mix(f1[g.c0], f1[g.c1], g.fc);
+  return mix(top, bottom, g.fr) * (float)w * (float)(h - 1);
+}
+
+// A lat-long position drawn in proportion to the bilinear interpolation of the table's weights.
+inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
+  __global const float* sums = table + env_table_row_sums_offset(h);
+  float ub, ur;
+  int band = sample_cdf(table, h - 1, u.y, &ub);
+  float a = sums[band], b = sums[band + 1];
+  float fr = sample_linear(ub, a, b);
+  // At v the band's density is (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised
+  // densities: pick row band + i in proportion to its term, then u from that row.
+  float share = (1.0f - fr) * a, total = share + fr * b;
+  float p0 = total > 0.0f ? share / total : (a > 0.0f ? 1.0f : 0.0f);
+  int row = band;
+  if (u.x < p0) {
+    ur = u.x / p0;
+  } else {
+    row = band + 1;
+    ur = (u.x - p0) / (1.0f - p0);
+  }
+  ur = clamp(ur, 0.0f, 0x1.fffffep-1f);
+  float uc;
+  int c = sample_cdf(table + env_table_columns_offset(w, h, row), w, ur, &uc);
+  __global const float* f = table + env_table_weights_offset(w, h, row);
+  float fc = sample_linear(uc, f[c], f[c + 1 == w ? 0 : c + 1]);
+  float x = ((float)c + fc + 0.5f) / (float)w;
+  return (float2)(x >= 1.0f ? x - 1.0f : x, ((float)band + fr) / (float)(h - 1));
+}
