@@ -1,5 +1,7 @@
 #include "render/gradient_images.h"
 
+#include <optional>
+
 #include "recon/reconstruct.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -46,8 +48,12 @@ bool has_half(const GradientLayers& h, size_t values) { return h.primal.size() =
 // (the same layers for the L1 and L2 forms, which do not read them), plus data's direct.
 std::vector<float> reconstruct_layers(Context& ctx, int w, int h, const GradientLayers& data,
                                       const GradientLayers& weights, const ReconSettings& recon, Stats* stats) {
-  ReconVariance variance{weights.primal_variance, weights.dx_variance, weights.dy_variance};
-  ReconResult r = reconstruct(ctx, w, h, minus(data.primal, data.direct), data.dx, data.dy, recon, stats, &variance);
+  std::optional<ReconVariance> variance;
+  if (recon.norm == ReconNorm::Weighted) {
+    variance = ReconVariance{weights.primal_variance, weights.dx_variance, weights.dy_variance};
+  }
+  ReconResult r = reconstruct(ctx, w, h, minus(data.primal, data.direct), data.dx, data.dy, recon, stats,
+                              variance ? &*variance : nullptr);
   log::verbose("reconstruction (", recon_norm_name(recon.norm), ", alpha ", recon.alpha, "): ", r.iterations,
                " iterations, residual ", r.residual, ", ", r.seconds, " s");
   if (data.direct.size() == r.rgb.size()) {
@@ -56,22 +62,26 @@ std::vector<float> reconstruct_layers(Context& ctx, int w, int h, const Gradient
   return r.rgb;
 }
 
-void add_layers(Image& out, const std::string& prefix, const GradientLayers& g) {
-  const std::pair<const char*, const std::vector<float>*> layers[] = {
-      {"primal", &g.primal},
-      {"dx", &g.dx},
-      {"dy", &g.dy},
-      {"direct", &g.direct},
-      {"primal_variance", &g.primal_variance},
-      {"dx_variance", &g.dx_variance},
-      {"dy_variance", &g.dy_variance}};
-  for (const auto& [name, values] : layers) {
-    if (!values->empty()) out.add_rgb_layer(prefix + name, *values);
-  }
+// f(name, layer) for each layer of `g` (const or not), in the order they are saved.
+template <class Layers, class F>
+void for_each_layer(Layers& g, F f) {
+  f("primal", g.primal);
+  f("dx", g.dx);
+  f("dy", g.dy);
+  f("direct", g.direct);
+  f("primal_variance", g.primal_variance);
+  f("dx_variance", g.dx_variance);
+  f("dy_variance", g.dy_variance);
 }
 
-// Reads the layers under `prefix`; with `required`, primal, dx, dy, direct and the three
-// variances must all be there (for the whole render: primal, dx and dy).
+void add_layers(Image& out, const std::string& prefix, const GradientLayers& g) {
+  for_each_layer(g, [&](const char* name, const std::vector<float>& values) {
+    if (!values.empty()) out.add_rgb_layer(prefix + name, values);
+  });
+}
+
+// The layers under `prefix` that `in` holds; those in `required` must be there, else an
+// InputError naming `path`, the layer and `why`.
 GradientLayers read_layers(const Image& in, const std::string& path, const std::string& prefix,
                            const std::vector<std::string>& required, const std::string& why) {
   for (const std::string& name : required) {
@@ -81,17 +91,9 @@ GradientLayers read_layers(const Image& in, const std::string& path, const std::
     }
   }
   GradientLayers g;
-  const std::pair<const char*, std::vector<float>*> layers[] = {
-      {"primal", &g.primal},
-      {"dx", &g.dx},
-      {"dy", &g.dy},
-      {"direct", &g.direct},
-      {"primal_variance", &g.primal_variance},
-      {"dx_variance", &g.dx_variance},
-      {"dy_variance", &g.dy_variance}};
-  for (const auto& [name, values] : layers) {
-    if (in.has_rgb_layer(prefix + name)) *values = in.rgb_layer(prefix + name);
-  }
+  for_each_layer(g, [&](const char* name, std::vector<float>& values) {
+    if (in.has_rgb_layer(prefix + name)) values = in.rgb_layer(prefix + name);
+  });
   return g;
 }
 
@@ -126,7 +128,8 @@ GradientImages gradient_layers_from(const Image& in, const std::string& path, bo
   if (g.primal_variance.empty() && in.has_rgb_layer("variance")) g.primal_variance = in.rgb_layer("variance");
   g.width = in.width;
   g.height = in.height;
-  const std::vector<std::string> all = {"primal", "dx", "dy", "direct", "primal_variance", "dx_variance", "dy_variance"};
+  std::vector<std::string> all;
+  for_each_layer(g, [&](const char* name, const std::vector<float>&) { all.push_back(name); });
   for (int h = 0; h < 2; ++h) {
     if (halves_required || in.has_rgb_layer(std::string(kHalfPrefix[h]) + "primal")) {
       g.halves[h] = read_layers(in, path, kHalfPrefix[h], all,
