@@ -58,12 +58,22 @@ int compare_command(const Options& o) {
       throw Error("--error-image " + o.error_image + ": the error image is a PNG: name it with .png");
     }
   }
-  Image a = read_image(o.compare[0]), b = read_image(o.compare[1]);
-  ImageError e = compare_images(a, b);
-  nlohmann::json j = {{"relmse", e.rel_mse}, {"mse", e.mse}, {"mape", e.mape}, {"values", e.values},
-                      {"skipped_nonfinite", e.skipped}};
+  // The last image is the reference; with several before it, their errors are averaged and
+  // split into bias^2 and variance.
+  std::vector<Image> runs;
+  for (size_t i = 0; i + 1 < o.compare.size(); ++i) runs.push_back(read_image(o.compare[i]));
+  Image reference = read_image(o.compare.back());
+  ImageSetError set = compare_image_set(runs, reference);
+  const ImageError& e = set.mean;
+  nlohmann::json j = {{"relmse", e.rel_mse}, {"mse", e.mse},       {"mape", e.mape}, {"brightness", e.brightness},
+                      {"values", e.values},  {"skipped_nonfinite", e.skipped}};
+  if (runs.size() > 1) {
+    j["runs"] = runs.size();
+    j["bias2"] = set.bias2;
+    j["variance"] = set.variance;
+  }
   std::printf("%s\n", j.dump().c_str());
-  if (!o.error_image.empty()) write_png(o.error_image, error_image(a, b));
+  if (!o.error_image.empty()) write_png(o.error_image, error_image(runs.front(), reference));
   return 0;
 }
 
@@ -83,7 +93,7 @@ int run_command(const Options& options) {
     // Outputs are checked before the reconstruction runs.
     checked_render_outputs(out, options.stats_path);
     std::optional<ReconSettings> recon = recon_from_params(IntegratorParams(options.integrator_params));
-    if (!recon) throw Error("--reconstruct needs a reconstruction: --recon l1 or l2, not none");
+    if (!recon) throw Error("--reconstruct needs a reconstruction: --recon l1, l2 or weighted, not none");
     int code = reconstruct_command(options.reconstruct, out, *recon, ctx, &stats);
     if (!options.stats_path.empty()) stats.write_json(options.stats_path);
     return code;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <list>
 
 namespace gdr {
@@ -80,10 +81,13 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("--reconstruct", o.reconstruct,
                  "Reconstruct a saved gradient-domain render (EXR with primal/dx/dy layers)")
       ->check(CLI::ExistingFile);
-  app.add_option("--compare", o.compare, "Print relMSE, MSE and MAPE of image A against reference B as JSON")
-      ->expected(2)
+  app.add_option("--compare", o.compare,
+                 "A.exr [B.exr ...] REFERENCE.exr: print relMSE, MSE, MAPE and the brightness ratio of the images "
+                 "against the last one as JSON; several images (renders with different seeds) are averaged and their "
+                 "relMSE split into bias2 and variance")
+      ->expected(2, std::numeric_limits<int>::max())
       ->check(CLI::ExistingFile);
-  app.add_option("--error-image", o.error_image, "With --compare: write a false-colour relMSE image (PNG)");
+  app.add_option("--error-image", o.error_image, "With --compare: write a false-colour relMSE image (PNG) of the first image");
   app.add_option("-o,--output", o.output, "Output image (.exr; a tone-mapped .png is written beside it)");
   app.add_option("--integrator", o.integrator, "Integrator: " + integrator_names() +
                                                    " (default: the scene's integrator, else pt; see --list-integrators)")
@@ -128,8 +132,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   param("--shift-threshold", "shift_threshold",
         "roughness at or below which a vertex counts as glossy/specular (not reconnected; default 0.001)")
       ->check(kFiniteNonNegative);
-  param("--recon", "recon", "Poisson reconstruction: l1 (default) | l2 | none")
-      ->check(CLI::IsMember({"l1", "l2", "none"}));
+  param("--recon", "recon",
+        "Poisson reconstruction: l1 (default) | l2 | weighted (L2 with each term weighted by the inverse of its "
+        "per-pixel variance estimate) | none")
+      ->check(CLI::IsMember({"l1", "l2", "weighted", "none"}));
   param("--recon-solver", "recon_solver",
         "Poisson solver, also for --reconstruct: fast (multigrid-preconditioned CG, direct DCT solve for L2; "
         "default) | cg (the published baseline: plain CG, 50 iterations per solve)")

@@ -14,7 +14,7 @@ struct Options {
   bool list_integrators = false;
   std::string info_scene;   // --info SCENE
   std::string reconstruct;  // --reconstruct IN.exr
-  std::vector<std::string> compare;  // --compare A.exr REFERENCE.exr
+  std::vector<std::string> compare;  // --compare A.exr [B.exr ...] REFERENCE.exr
   std::string error_image;            // --error-image: false-colour relMSE PNG of --compare
   std::string scene;        // positional: render this scene
 

@@ -2,8 +2,6 @@
 
 #include "app/output_paths.h"
 #include "image/atomic_file.h"
-
-
 #include "image/image_io.h"
 #include "render/gradient_images.h"
 #include "util/error.h"
@@ -14,8 +12,9 @@ namespace gdr {
 int reconstruct_command(const std::string& in_exr, const std::string& out_path,
                         const ReconSettings& settings, Context& ctx, Stats* stats) {
   Image in = read_image(in_exr);
-  Image out = gradient_image(ctx, gradient_layers_from(in, in_exr), settings, stats);
-  log::info("reconstructed ", in_exr, " (", settings.norm == ReconNorm::L1 ? "L1" : "L2", ", alpha ",
+  Image out = gradient_image(ctx, gradient_layers_from(in, in_exr, settings.norm == ReconNorm::Weighted), settings,
+                             stats);
+  log::info("reconstructed ", in_exr, " (", recon_norm_name(settings.norm), ", alpha ",
             settings.alpha, ")");
   ImageOutputs images = image_outputs(out_path);
   OutputSet outputs;

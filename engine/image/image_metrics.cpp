@@ -37,6 +37,7 @@ ImageError compare_images(const Image& a, const Image& b) {
   check_sizes(a, b);
   std::vector<float> pa = a.rgb_layer(""), pb = b.rgb_layer("");
   ImageError e;
+  double sum_a = 0, sum_b = 0;
   for (size_t i = 0; i < pa.size(); ++i) {
     double x = pa[i], y = pb[i];
     if (!std::isfinite(x) || !std::isfinite(y)) {
@@ -47,6 +48,8 @@ ImageError compare_images(const Image& a, const Image& b) {
     e.mse += d * d;
     e.rel_mse += d * d / (y * y + kEps);
     e.mape += std::fabs(d) / (std::fabs(y) + kEps);
+    sum_a += x;
+    sum_b += y;
     ++e.values;
   }
   if (e.values > 0) {
@@ -54,7 +57,58 @@ ImageError compare_images(const Image& a, const Image& b) {
     e.rel_mse /= e.values;
     e.mape /= e.values;
   }
+  e.brightness = sum_b != 0 ? sum_a / sum_b : 0.0;
   return e;
+}
+
+ImageSetError compare_image_set(const std::vector<Image>& runs, const Image& reference) {
+  if (runs.empty()) throw Error("compare: no images to compare with the reference");
+  std::vector<std::vector<float>> values;
+  for (const Image& run : runs) {
+    check_sizes(run, reference);
+    values.push_back(run.rgb_layer(""));
+  }
+  std::vector<float> ref = reference.rgb_layer("");
+  const double k = double(runs.size());
+  ImageSetError out;
+  out.runs = runs.size();
+  ImageError& e = out.mean;
+  double sum_runs = 0, sum_ref = 0;
+  for (size_t i = 0; i < ref.size(); ++i) {
+    double y = ref[i];
+    bool finite = std::isfinite(y);
+    for (const auto& v : values) finite = finite && std::isfinite(v[i]);
+    if (!finite) {
+      ++e.skipped;
+      continue;
+    }
+    double m = 0;
+    for (const auto& v : values) m += v[i];
+    m /= k;
+    double ss = 0, se = 0, ae = 0;
+    for (const auto& v : values) {
+      ss += (v[i] - m) * (v[i] - m);
+      se += (v[i] - y) * (v[i] - y);
+      ae += std::fabs(v[i] - y);
+    }
+    const double norm = y * y + kEps;
+    e.mse += se / k;
+    e.rel_mse += se / k / norm;
+    e.mape += ae / k / (std::fabs(y) + kEps);
+    if (runs.size() > 1) out.variance += ss / (k - 1) / norm;
+    sum_runs += m;
+    sum_ref += y;
+    ++e.values;
+  }
+  if (e.values > 0) {
+    e.mse /= e.values;
+    e.rel_mse /= e.values;
+    e.mape /= e.values;
+    out.variance /= e.values;
+  }
+  e.brightness = sum_ref != 0 ? sum_runs / sum_ref : 0.0;
+  out.bias2 = e.rel_mse - out.variance;
+  return out;
 }
 
 Image error_image(const Image& a, const Image& b) {

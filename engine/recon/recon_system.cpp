@@ -33,8 +33,11 @@ ReconSystem::ReconSystem(Context& ctx, int width, int height)
       pack_(recon_program(ctx, "recon/setup.cl")->kernel("recon_pack")),
       weights_l2_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_l2")),
       weights_l1_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_l1")),
+      weights_variance_(recon_program(ctx, "recon/setup.cl")->kernel("recon_weights_variance")),
+      step_kernel_(recon_program(ctx, "recon/setup.cl")->kernel("recon_step")),
       rhs_(recon_program(ctx, "recon/setup.cl")->kernel("recon_rhs")),
       energy_(recon_program(ctx, "recon/setup.cl")->kernel("recon_energy")),
+      energy_weighted_(recon_program(ctx, "recon/setup.cl")->kernel("recon_energy_weighted")),
       unpack_(recon_program(ctx, "recon/setup.cl")->kernel("recon_unpack")) {}
 
 void ReconSystem::load(const std::vector<float>& primal_rgb, const std::vector<float>& dx_rgb,
@@ -73,6 +76,42 @@ void ReconSystem::set_l1_weights(float alpha, float reg) {
   grid_.run(weights_l1_);
 }
 
+void ReconSystem::set_variance_weights(const ReconVariance& v, float alpha, float floor_rel) {
+  // The image's variance scale, per channel: the median of the positive finite estimates of all
+  // three inputs (a few fireflies would set a mean, a dark background of zero estimates a plain
+  // median, and an exact primal would leave the gradients' estimates out of a primal-only one).
+  // Weights relative to it do not depend on the exposure, and neither does the floor.
+  cl_float4 inv_scale{};
+  std::vector<float> positive;
+  positive.reserve(v.primal.size());
+  for (int c = 0; c < 3; ++c) {
+    positive.clear();
+    for (const std::vector<float>* layer : {&v.primal, &v.dx, &v.dy}) {
+      for (size_t i = size_t(c); i < layer->size(); i += 3) {
+        float x = (*layer)[i];
+        if (std::isfinite(x) && x > 0) positive.push_back(x);
+      }
+    }
+    if (positive.empty()) continue;  // no variance in this channel: uniform weights
+    auto mid = positive.begin() + positive.size() / 2;
+    std::nth_element(positive.begin(), mid, positive.end());
+    double inv = 1.0 / double(*mid);
+    inv_scale.s[c] = inv < double(std::numeric_limits<float>::max()) ? float(inv) : 0.0f;
+  }
+  // The interleaved inputs were packed already (load): their buffers carry the estimates now.
+  primal_in_.write(v.primal);
+  dx_in_.write(v.dx);
+  dy_in_.write(v.dy);
+  count_.fill(0);
+  weights_variance_
+      .args(primal_in_, dx_in_, dy_in_, grid_.w, grid_.h, grid_.ws, inv_scale, floor_rel, alpha * alpha, P_, Gx_,
+            Gy_, wp_, wx_, wy_, count_)
+      .run_2d(size_t(grid_.w), size_t(grid_.h), 64, 1);
+  nonfinite_inputs_ += count_.read()[0];
+  step_kernel_.args(wp_, wx_, wy_, grid_.ws, grid_.h, step_);
+  grid_.run(step_kernel_);
+}
+
 void ReconSystem::build_rhs() {
   rhs_.args(P_, Gx_, Gy_, wp_, wx_, wy_, grid_.ws, grid_.h, b_);
   grid_.run(rhs_);
@@ -81,6 +120,13 @@ void ReconSystem::build_rhs() {
 double ReconSystem::energy(float alpha, bool l2) {
   energy_.args(x_, P_, Gx_, Gy_, alpha, l2 ? 1 : 0, grid_.ws, grid_.h, dots_.partial());
   dots_.reduce(energy_, grid_, DeviceDots::kEnergy);
+  cl_float4 e = dots_.read(DeviceDots::kEnergy);
+  return double(e.s[0]) + e.s[1] + e.s[2];
+}
+
+double ReconSystem::weighted_energy() {
+  energy_weighted_.args(x_, P_, Gx_, Gy_, wp_, wx_, wy_, grid_.ws, grid_.h, dots_.partial());
+  dots_.reduce(energy_weighted_, grid_, DeviceDots::kEnergy);
   cl_float4 e = dots_.read(DeviceDots::kEnergy);
   return double(e.s[0]) + e.s[1] + e.s[2];
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "recon/device_dots.h"
+#include "recon/reconstruct.h"
 
 namespace gdr {
 
@@ -46,10 +47,17 @@ class ReconSystem {
   // IRLS weights 1/(|e| + reg) from the current estimate x, with the Jacobi step, b, and the
   // residual r = b - A x of x.
   void set_l1_weights(float alpha, float reg);
+  // Weights of the inverse-variance weighted L2 system (kernels/recon/setup.cl:
+  // recon_weights_variance) from per-pixel variance estimates of the loaded inputs (sizes
+  // already checked), with the Jacobi step; b is left to build_rhs. Non-finite estimates are
+  // added to nonfinite_inputs().
+  void set_variance_weights(const ReconVariance& variance, float alpha, float floor_rel);
   // b from the current weights.
   void build_rhs();
   // Objective value of x (sum over channels) in the L1 or L2 norm.
   double energy(float alpha, bool l2);
+  // Objective value of x with the current weights (sum over channels of w e^2).
+  double weighted_energy();
   // x as interleaved RGB, always finite.
   std::vector<float> result(unsigned* nonfinite_outputs);
 
@@ -64,7 +72,8 @@ class ReconSystem {
   PlaneBuffer P_, Gx_, Gy_, wp_, wx_, wy_, step_, b_, x_, r_;
   Buffer<float> primal_in_, dx_in_, dy_in_, rgb_out_;
   Buffer<cl_uint> count_;
-  Kernel pack_, weights_l2_, weights_l1_, rhs_, energy_, unpack_;
+  Kernel pack_, weights_l2_, weights_l1_, weights_variance_, step_kernel_, rhs_, energy_, energy_weighted_,
+      unpack_;
 };
 
 }  // namespace gdr

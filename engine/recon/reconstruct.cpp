@@ -89,12 +89,25 @@ Workspace& workspace(Context& ctx, const ReconSettings& s, int w, int h) {
 
 }  // namespace
 
+const char* recon_norm_name(ReconNorm norm) {
+  switch (norm) {
+    case ReconNorm::L1: return "L1";
+    case ReconNorm::L2: return "L2";
+    case ReconNorm::Weighted: return "weighted";
+  }
+  return "?";
+}
+
 ReconSettings recon_settings(const std::string& norm, float alpha, const std::string& solver) {
   ReconSettings s;
-  if (norm == "l1" || norm == "l2") {
-    s.norm = norm == "l1" ? ReconNorm::L1 : ReconNorm::L2;
+  if (norm == "l1") {
+    s.norm = ReconNorm::L1;
+  } else if (norm == "l2") {
+    s.norm = ReconNorm::L2;
+  } else if (norm == "weighted") {
+    s.norm = ReconNorm::Weighted;
   } else {
-    throw Error("unknown reconstruction '" + norm + "' (expected l1 or l2)");
+    throw Error("unknown reconstruction '" + norm + "' (expected l1, l2 or weighted)");
   }
   if (solver == "fast" || solver == "cg") {
     s.solver = solver == "fast" ? ReconSettings::Solver::Fast : ReconSettings::Solver::CG;
@@ -110,7 +123,7 @@ ReconSettings recon_settings(const std::string& norm, float alpha, const std::st
 
 ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<float>& primal_rgb,
                         const std::vector<float>& dx_rgb, const std::vector<float>& dy_rgb,
-                        const ReconSettings& settings, Stats* stats) {
+                        const ReconSettings& settings, Stats* stats, const ReconVariance* variance) {
   // Kernels index the planar buffers (recon/planes.h) with 32-bit ints.
   if (width <= 0 || height <= 0 || width > INT_MAX - GDR_RECON_ALIGN || height > INT_MAX / 4 ||
       double(gdr_recon_stride(width)) * gdr_recon_rows(height) > INT_MAX / 2) {
@@ -120,6 +133,16 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
   check_input(width, height, dx_rgb, "dx");
   check_input(width, height, dy_rgb, "dy");
   const bool l1 = settings.norm == ReconNorm::L1;
+  const bool weighted = settings.norm == ReconNorm::Weighted;
+  if (weighted) {
+    if (!variance) throw Error("reconstruct: the weighted form needs variance estimates of primal, dx and dy");
+    check_input(width, height, variance->primal, "primal variance");
+    check_input(width, height, variance->dx, "dx variance");
+    check_input(width, height, variance->dy, "dy variance");
+    if (!(settings.variance_floor > 0) || !std::isfinite(settings.variance_floor)) {
+      throw Error("reconstruct: the variance floor must be a finite value > 0");
+    }
+  }
   const bool fast = settings.solver == ReconSettings::Solver::Fast;
   auto start = std::chrono::steady_clock::now();
   // The solvers' launches are queued without waiting on each (the host reads a residual per
@@ -135,7 +158,14 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
   double l1_tol = settings.tolerance > 0 ? settings.tolerance : fast ? kFastL1RoundTolerance : 0.0;
 
   ReconResult result;
-  if (!l1) {
+  if (weighted) {
+    // Per-pixel weights: no direct solve, the (P)CG from the primal.
+    problem.set_variance_weights(*variance, settings.alpha, settings.variance_floor);
+    problem.build_rhs();
+    SolveOutcome o = solver.solve(problem, cap, l2_tol);
+    result.iterations = o.iterations;
+    result.residual = o.residual;
+  } else if (!l1) {
     problem.set_l2_weights(settings.alpha);
     // With every term present the weights are uniform and a direct solve gives x; the PCG then
     // only checks its residual (and polishes it, should float rounding leave it above tolerance).
@@ -167,7 +197,7 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
       result.residual = o.residual;
     }
   }
-  result.energy = problem.energy(settings.alpha, !l1);
+  result.energy = weighted ? problem.weighted_energy() : problem.energy(settings.alpha, !l1);
   unsigned nonfinite_outputs = 0;
   result.rgb = problem.result(&nonfinite_outputs);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -181,7 +211,7 @@ ReconResult reconstruct(Context& ctx, int width, int height, const std::vector<f
     stats->add_count("recon/iterations", uint64_t(result.iterations));
     stats->set("recon/residual", result.residual);
     stats->set("recon/energy", result.energy);
-    stats->set("recon/norm", l1 ? "L1" : "L2");
+    stats->set("recon/norm", recon_norm_name(settings.norm));
     stats->set("recon/solver", fast ? "fast" : "cg");
     stats->add_time("recon/solve", result.seconds);
   }

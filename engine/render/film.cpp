@@ -40,14 +40,37 @@ std::vector<float> film_rgb(const Buffer<Vec4>& sums, float scale) {
   return rgb;
 }
 
-std::vector<float> variance_of_mean(const std::vector<float>& mean, const std::vector<float>& mean_square,
-                                    int samples) {
-  std::vector<float> variance(mean.size());
-  for (size_t i = 0; i < mean.size(); ++i) {
-    double var = std::max(0.0, double(mean_square[i]) - double(mean[i]) * mean[i]);
-    variance[i] = samples > 1 ? float(var / (samples - 1)) : 0.0f;
+PassEstimate pass_estimate(const Buffer<Vec4>& sum, const Buffer<Vec4>& m2, int passes) {
+  PassEstimate e;
+  e.passes = passes;
+  e.mean = film_rgb(sum, mean_scale(passes));
+  e.variance.assign(e.mean.size(), 0.0f);
+  if (passes < 2) return e;
+  std::vector<float> deviations = film_rgb(m2, 1.0f);
+  const double scale = 1.0 / (double(passes - 1) * passes);
+  for (size_t i = 0; i < deviations.size(); ++i) {
+    e.variance[i] = float(std::max(0.0, double(deviations[i])) * scale);
   }
-  return variance;
+  return e;
+}
+
+PassEstimate combine(const PassEstimate& a, const PassEstimate& b) {
+  if (b.passes == 0) return a;
+  if (a.passes == 0) return b;
+  const double na = a.passes, nb = b.passes, n = na + nb;
+  PassEstimate e;
+  e.passes = a.passes + b.passes;
+  e.mean.resize(a.mean.size());
+  e.variance.resize(a.mean.size());
+  for (size_t i = 0; i < a.mean.size(); ++i) {
+    const double ma = a.mean[i], mb = b.mean[i];
+    // Summed squared deviations of each set back from its variance of the mean, then joined.
+    const double m2 = double(a.variance[i]) * na * (na - 1) + double(b.variance[i]) * nb * (nb - 1) +
+                      na * nb / n * (ma - mb) * (ma - mb);
+    e.mean[i] = float((na * ma + nb * mb) / n);
+    e.variance[i] = float(m2 / ((n - 1) * n));
+  }
+  return e;
 }
 
 }  // namespace gdr

@@ -39,9 +39,23 @@ inline float mean_scale(int samples) { return samples > 0 ? 1.0f / samples : 0.0
 // The buffer's RGB times `scale`, interleaved.
 std::vector<float> film_rgb(const Buffer<Vec4>& sums, float scale);
 
-// Per-pixel variance of the mean of `samples` passes (one sample each), from the passes' mean and
-// mean square (interleaved RGB).
-std::vector<float> variance_of_mean(const std::vector<float>& mean, const std::vector<float>& mean_square,
-                                    int samples);
+// The mean of a set of passes and its per-pixel variance (interleaved RGB). The variance is
+// estimated over passes, not over the paths inside one: each pass adds one sample per pixel and
+// passes are independent and identically distributed, while inside a pass a gradient-domain
+// pixel combines paths it shares with its neighbours. m2 / (passes - 1) is the unbiased variance
+// of one pass, and dividing by passes again gives that of their mean, the error the image
+// carries. 0 with fewer than 2 passes.
+struct PassEstimate {
+  int passes = 0;
+  std::vector<float> mean, variance;
+};
+
+// From a layer of sums and one of summed squared deviations (kernels/path/film.h:
+// film_add_moments) over `passes` passes.
+PassEstimate pass_estimate(const Buffer<Vec4>& sum, const Buffer<Vec4>& m2, int passes);
+
+// Two disjoint sets of passes of the same pixels as one (the pairwise update of Chan, Golub and
+// LeVeque, in double).
+PassEstimate combine(const PassEstimate& a, const PassEstimate& b);
 
 }  // namespace gdr

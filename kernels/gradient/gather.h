@@ -2,12 +2,17 @@
 #pragma once
 #include "gradient/accumulators.h"
 #include "gradient/neighbours.h"
+#include "path/film.h"
 
 // One pass's sums into the film: the primal (each pixel the mean of its four pairwise
-// estimates), the forward-difference gradients, and directly seen emission.
-__kernel void gpt_gather(int width, int height, __global const float4* acc, __global float4* primal,
-                         __global float4* dx, __global float4* dy, __global float4* direct,
-                         __global float4* primal_sq) {
+// estimates), the forward-difference gradients, and directly seen emission; for the primal and
+// both gradients also the sums of squared deviations (film_add_moments) from which the host
+// estimates their per-pixel variance. The film layers are those of the pass's half
+// (render/gradient_film.h); `passes` counts the passes they hold, this one included.
+__kernel void gpt_gather(int width, int height, __global const float4* acc, int passes,
+                         __global float4* primal, __global float4* dx, __global float4* dy,
+                         __global float4* direct, __global float4* primal_m2, __global float4* dx_m2,
+                         __global float4* dy_m2) {
   uint p = get_global_id(0);
   if (p >= (uint)(width * height)) return;
   int x = (int)(p % (uint)width), y = (int)(p / (uint)width);
@@ -34,9 +39,8 @@ __kernel void gpt_gather(int width, int height, __global const float4* acc, __gl
     gy = (acc[p * GPT_ACC_COUNT + GPT_ACC_OFFSET(GPT_DIR_PY)].xyz - acc[p * GPT_ACC_COUNT + GPT_ACC_BASE(GPT_DIR_PY)].xyz) +
          (acc[n * GPT_ACC_COUNT + GPT_ACC_BASE(GPT_DIR_NY)].xyz - acc[n * GPT_ACC_COUNT + GPT_ACC_OFFSET(GPT_DIR_NY)].xyz);
   }
-  primal[p] += (float4)(value, 0.0f);
-  dx[p] += (float4)(gx, 0.0f);
-  dy[p] += (float4)(gy, 0.0f);
+  film_add_moments(primal, primal_m2, p, value, passes);
+  film_add_moments(dx, dx_m2, p, gx, passes);
+  film_add_moments(dy, dy_m2, p, gy, passes);
   direct[p] += (float4)(d, 0.0f);
-  primal_sq[p] += (float4)(value * value, 0.0f);
 }

@@ -1,6 +1,6 @@
 // Problem set-up for the screened Poisson reconstruction: packing and checking the inputs,
-// the per-term weights (L2, or IRLS for L1), the right-hand side, the Jacobi step, the
-// objective value, and unpacking the result. Layout: grid.h.
+// the per-term weights (L2, inverse-variance weighted L2, or IRLS for L1), the right-hand side,
+// the Jacobi step, the objective value, and unpacking the result. Layout: grid.h.
 #include "recon/grid.h"
 
 // Interleaved RGB primal / dx / dy -> planes; x starts at the primal. P, Gx, Gy arrive filled
@@ -57,6 +57,56 @@ __kernel void recon_weights_l2(__global const float* P, __global const float* Gx
   VSTORE(wyi, wy + o);
   VSTORE(recon_jacobi_step(wpi, wxi, wyi, recon_weight(one, VLOAD(Gx + o - 1)),
                         recon_weight(one, VLOAD(Gy + o - ws))),
+         step + o);
+}
+
+// The weighted (generalised least squares) form: a term's weight is inversely proportional to
+// the variance estimate v of its input, 1 / (v * inv_scale + floor_rel), with inv_scale the
+// inverse of the image's variance scale (0 when the image has no variance at all) and floor_rel
+// > 0 the floor relative to it: weights are dimensionless, at most 1 / floor_rel, and a zero
+// estimate gives the largest weight instead of an infinite one. A non-finite estimate stands for
+// the scale itself (weight 1 / (1 + floor_rel)) and is counted; a negative one reads as 0.
+RECON_INLINE float recon_variance_weight(float v, float inv_scale, float floor_rel, uint* bad) {
+  if (!isfinite(v)) {
+    ++*bad;
+    return 1.0f / (1.0f + floor_rel);
+  }
+  return 1.0f / (fmax(v, 0.0f) * inv_scale + floor_rel);
+}
+
+// Term weights of the weighted form from per-pixel variance estimates (interleaved RGB, as the
+// primal, dx and dy they belong to), times alpha^2 for the primal term as in the L2 form;
+// absent terms keep weight 0. The Jacobi step is left to recon_step. 2D launch over pixels.
+__kernel void recon_weights_variance(__global const float* var_p, __global const float* var_x,
+                                     __global const float* var_y, int w, int h, int ws,
+                                     float4 inv_scale, float floor_rel, float alpha2,
+                                     __global const float* P, __global const float* Gx,
+                                     __global const float* Gy, __global float* wp,
+                                     __global float* wx, __global float* wy,
+                                     __global uint* nonfinite) {
+  int px = get_global_id(0), py = get_global_id(1);
+  if (px >= w || py >= h) return;
+  int i = py * w + px;
+  uint bad = 0;
+  for (int c = 0; c < 3; ++c) {
+    int e = gdr_recon_plane(c, ws, h) + py * ws + px;
+    float s = recon_lane(inv_scale, c);
+    float a = alpha2 * recon_variance_weight(var_p[3 * i + c], s, floor_rel, &bad);
+    float b = recon_variance_weight(var_x[3 * i + c], s, floor_rel, &bad);
+    float d = recon_variance_weight(var_y[3 * i + c], s, floor_rel, &bad);
+    wp[e] = RECON_ABSENT(P[e]) ? 0.0f : a;
+    wx[e] = RECON_ABSENT(Gx[e]) ? 0.0f : b;
+    wy[e] = RECON_ABSENT(Gy[e]) ? 0.0f : d;
+  }
+  if (bad) atomic_add(nonfinite, bad);
+}
+
+// The Jacobi step from the stored weights.
+__kernel void recon_step(__global const float* wp, __global const float* wx,
+                         __global const float* wy, int ws, int h, __global float* step) {
+  RECON_CHUNK(o, c, ws, h)
+  VSTORE(recon_jacobi_step(VLOAD(wp + o), VLOAD(wx + o), VLOAD(wy + o), VLOAD(wx + o - 1),
+                           VLOAD(wy + o - ws)),
          step + o);
 }
 
@@ -128,6 +178,25 @@ __kernel void recon_energy(__global const float* x, __global const float* P,
     floatv ex = recon_value(VLOAD(x + o + 1) - xi - VLOAD(Gx + o));
     floatv ey = recon_value(VLOAD(x + o + ws) - xi - VLOAD(Gy + o));
     s += l2 ? ep * ep + ex * ex + ey * ey : fabs(ep) + fabs(ex) + fabs(ey);
+  }
+  RECON_WRITE_PARTIAL(s, scratch, partial)
+}
+
+// The weighted objective: per group and channel the sum of wp (x - P)^2 + wx (dx x - Gx)^2 +
+// wy (dy x - Gy)^2 with the stored weights (absent terms have weight 0). Reducing launch.
+__kernel void recon_energy_weighted(__global const float* x, __global const float* P,
+                                    __global const float* Gx, __global const float* Gy,
+                                    __global const float* wp, __global const float* wx,
+                                    __global const float* wy, int ws, int h,
+                                    __global float* partial) {
+  __local float scratch[RECON_LOCAL];
+  floatv s = (floatv)(0.0f);
+  RECON_FOR_SHARE(o, c, ws, h) {
+    floatv xi = VLOAD(x + o);
+    floatv ep = recon_value(xi - VLOAD(P + o));
+    floatv ex = recon_value(VLOAD(x + o + 1) - xi - VLOAD(Gx + o));
+    floatv ey = recon_value(VLOAD(x + o + ws) - xi - VLOAD(Gy + o));
+    s += VLOAD(wp + o) * ep * ep + VLOAD(wx + o) * ex * ex + VLOAD(wy + o) * ey * ey;
   }
   RECON_WRITE_PARTIAL(s, scratch, partial)
 }

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/cli_harness.h"
 #include "image/image.h"
 #include "image/image_io.h"
@@ -215,6 +217,58 @@ TEST(Cli, ReconstructWithoutLayersIsRejected) {
   EXPECT_NE(r.output.find("plain.exr"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("primal"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir.file("recon.exr")));
+}
+
+// A render with --recon weighted saves the variance layers and the halves' layers, from which
+// --reconstruct --recon weighted rebuilds it; a render without the halves is refused by name.
+TEST(Cli, WeightedReconstructionSavesAndReadsItsLayers) {
+  TempDir dir;
+  CliResult render =
+      run_gdrender(kCornell + " --integrator gpt --recon weighted -D res=16 --spp 4 -o weighted.exr", dir);
+  ASSERT_EQ(render.code, 0) << render.output;
+  Image img = read_image(dir.file("weighted.exr"));
+  for (const char* layer : {"primal_variance", "dx_variance", "dy_variance", "even.primal", "even.direct",
+                            "odd.dx_variance", "odd.dy"}) {
+    EXPECT_TRUE(img.has_rgb_layer(layer)) << layer;
+  }
+  CliResult r = run_gdrender("--reconstruct weighted.exr --recon weighted -o again.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(read_image(dir.file("again.exr")).rgb_layer(""), img.rgb_layer(""));
+
+  CliResult l1 = run_gdrender(kCornell + " --integrator gpt -D res=16 --spp 4 -o l1.exr", dir);
+  ASSERT_EQ(l1.code, 0) << l1.output;
+  EXPECT_TRUE(read_image(dir.file("l1.exr")).has_rgb_layer("dx_variance"));
+  EXPECT_FALSE(read_image(dir.file("l1.exr")).has_rgb_layer("even.primal"));
+  r = run_gdrender("--reconstruct l1.exr --recon weighted -o refused.exr", dir);
+  EXPECT_NE(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("l1.exr"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'even.primal'"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("refused.exr")));
+}
+
+// --compare over two renders: runs at 1.2 and 1.4 against a reference of 1 everywhere. Per value
+// m = 1.3, s^2 = 0.02: mean relMSE (0.04 + 0.16) / 2, variance s^2, bias^2 the rest (m - 1)^2 -
+// s^2 / 2 = 0.08, all over 1 + 1e-2; brightness 1.3.
+TEST(Cli, CompareSplitsSeveralRunsIntoBiasAndVariance) {
+  TempDir dir;
+  for (auto [name, value] : {std::pair<const char*, float>{"a.exr", 1.2f}, {"b.exr", 1.4f}, {"ref.exr", 1.0f}}) {
+    Image img(4, 3, {});
+    img.add_rgb_layer("", std::vector<float>(4 * 3 * 3, value));
+    write_exr(dir.file(name), img);
+  }
+  CliResult r = run_gdrender("--compare a.exr b.exr ref.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  nlohmann::json j = nlohmann::json::parse(r.output.substr(r.output.rfind('{')));
+  EXPECT_EQ(j["runs"], 2);
+  EXPECT_NEAR(double(j["relmse"]), 0.1 / 1.01, 1e-5);
+  EXPECT_NEAR(double(j["variance"]), 0.02 / 1.01, 1e-5);
+  EXPECT_NEAR(double(j["bias2"]), 0.08 / 1.01, 1e-5);
+  EXPECT_NEAR(double(j["brightness"]), 1.3, 1e-5);
+  r = run_gdrender("--compare a.exr ref.exr", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  j = nlohmann::json::parse(r.output.substr(r.output.rfind('{')));
+  EXPECT_FALSE(j.contains("bias2"));
+  EXPECT_NEAR(double(j["brightness"]), 1.2, 1e-5);
 }
 
 }  // namespace

@@ -83,25 +83,29 @@ inline bool all_finite(const std::vector<float>& v) {
   return true;
 }
 
-// Dense normal equations built here from the definition of the objective, solved by Gaussian
-// elimination with partial pivoting (double precision), per channel.
-inline std::vector<float> dense_l2_solve(int w, int h, float alpha, const std::vector<float>& primal,
-                                  const std::vector<float>& dx, const std::vector<float>& dy) {
+// Dense normal equations built here from the definition of the weighted objective
+//   sum wp (x - p)^2 + wx (x_right - x - dx)^2 + wy (x_down - x - dy)^2
+// (weights interleaved RGB like the images; the last column's wx and last row's wy unused),
+// solved by Gaussian elimination with partial pivoting (double precision), per channel.
+inline std::vector<float> dense_weighted_solve(int w, int h, const std::vector<double>& wp,
+                                               const std::vector<double>& wx, const std::vector<double>& wy,
+                                               const std::vector<float>& primal, const std::vector<float>& dx,
+                                               const std::vector<float>& dy) {
   int n = w * h;
   std::vector<float> out(size_t(n) * 3);
   for (int c = 0; c < 3; ++c) {
     std::vector<std::vector<double>> A(n, std::vector<double>(n + 1, 0.0));
-    auto add_term = [&](int i, int j, double g) {  // (x_j - x_i - g)^2
-      A[i][i] += 1; A[j][j] += 1; A[i][j] -= 1; A[j][i] -= 1;
-      A[i][n] -= g; A[j][n] += g;
+    auto add_term = [&](int i, int j, double g, double k) {  // k (x_j - x_i - g)^2
+      A[i][i] += k; A[j][j] += k; A[i][j] -= k; A[j][i] -= k;
+      A[i][n] -= k * g; A[j][n] += k * g;
     };
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         int i = y * w + x;
-        A[i][i] += double(alpha) * alpha;  // (alpha (x_i - p_i))^2
-        A[i][n] += double(alpha) * alpha * primal[i * 3 + c];
-        if (x + 1 < w) add_term(i, i + 1, dx[i * 3 + c]);
-        if (y + 1 < h) add_term(i, i + w, dy[i * 3 + c]);
+        A[i][i] += wp[i * 3 + c];  // wp (x_i - p_i)^2
+        A[i][n] += wp[i * 3 + c] * primal[i * 3 + c];
+        if (x + 1 < w) add_term(i, i + 1, dx[i * 3 + c], wx[i * 3 + c]);
+        if (y + 1 < h) add_term(i, i + w, dy[i * 3 + c], wy[i * 3 + c]);
       }
     }
     for (int k = 0; k < n; ++k) {
@@ -122,6 +126,13 @@ inline std::vector<float> dense_l2_solve(int w, int h, float alpha, const std::v
     for (int i = 0; i < n; ++i) out[i * 3 + c] = float(x[i]);
   }
   return out;
+}
+
+// The unweighted L2 objective: weight alpha^2 on the primal, 1 on the gradients.
+inline std::vector<float> dense_l2_solve(int w, int h, float alpha, const std::vector<float>& primal,
+                                  const std::vector<float>& dx, const std::vector<float>& dy) {
+  std::vector<double> wp(primal.size(), double(alpha) * alpha), ones(primal.size(), 1.0);
+  return dense_weighted_solve(w, h, wp, ones, ones, primal, dx, dy);
 }
 
 // Settings that solve to convergence (for comparisons with exact answers).

@@ -1,7 +1,8 @@
 // The reconstruction kernels come in two forms (kernels/recon/grid.h): 16-float chunks for CPU
 // devices and one float per work item for GPUs. Both run here on the CPU device (the GPU form
-// through GDR_RECON_VECTOR=1) and must give the same images, for every norm and solver, on sizes
-// that are and are not multiples of the row alignment, with and without missing inputs.
+// through GDR_RECON_VECTOR=1) and must give the same images, for every norm (the weighted form
+// too) and solver, on sizes that are and are not multiples of the row alignment, with and without
+// missing inputs.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -48,6 +49,20 @@ TEST(ReconVectorForms, GpuFormMatchesCpuForm) {
       EXPECT_LT(test::max_abs_error(a.rgb, b.rgb), 1e-3);
       EXPECT_NEAR(a.energy, b.energy, 1e-4 * (1.0 + b.energy));
       // The same preconditioner, so about the same work.
+      EXPECT_NEAR(a.iterations, b.iterations, 2 + 0.2 * b.iterations);
+    }
+    // The weighted form, with variance estimates spread over two decades (and some zeros).
+    ReconVariance var{g.primal, g.dx, g.dy};
+    for (auto* v : {&var.primal, &var.dx, &var.dy}) {
+      for (size_t i = 0; i < v->size(); ++i) (*v)[i] = (i % 7 == 0) ? 0.0f : 1e-3f * float(1 + (i * 37) % 100);
+    }
+    for (auto solver : {ReconSettings::Solver::CG, ReconSettings::Solver::Fast}) {
+      SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + " weighted");
+      ReconSettings s = test::converged(ReconNorm::Weighted, solver);
+      ReconResult a = reconstruct(*scalar, w, h, g.primal, g.dx, g.dy, s, nullptr, &var);
+      ReconResult b = reconstruct(*wide, w, h, g.primal, g.dx, g.dy, s, nullptr, &var);
+      EXPECT_LT(test::max_abs_error(a.rgb, b.rgb), 1e-3);
+      EXPECT_NEAR(a.energy, b.energy, 1e-4 * (1.0 + b.energy));
       EXPECT_NEAR(a.iterations, b.iterations, 2 + 0.2 * b.iterations);
     }
   }

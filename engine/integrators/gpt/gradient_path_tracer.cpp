@@ -43,7 +43,7 @@ GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings
       acc_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height * GPT_ACC_COUNT),
       pend_(in.context, capacity_ * GPT_PEND_COUNT),
       counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)),
-      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"primal", "dx", "dy", "direct", "primal_sq"}) {
+      film_(in.context, in.scene.camera.width, in.scene.camera.height) {
   if (gpt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
 }
 
@@ -109,22 +109,15 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
   const uint32_t pixels = uint32_t(film_.pixels());
   film_.clear();
   if (aux_) aux_->clear();
-  GradientImages out;
-  out.width = w;
-  out.height = h;
-  out.samples = run_progressive(settings, [&](int sample) {
+  int samples = run_progressive(settings, [&](int sample) {
     for_each_chunk(pixels, capacity_, [&](uint32_t first, uint32_t count) {
       trace_chunk(settings, uint32_t(sample), first, count);
     });
-    gather_.args(w, h, acc_, film_["primal"], film_["dx"], film_["dy"], film_["direct"], film_["primal_sq"])
-        .run(pixels);
+    gather_.args(w, h, acc_, film_.pass(sample)).run(pixels);
   });
-  out.seconds = timer.elapsed();
-  out.primal = film_.mean_rgb("primal", out.samples);
-  out.dx = film_.mean_rgb("dx", out.samples);
-  out.dy = film_.mean_rgb("dy", out.samples);
-  out.direct = film_.mean_rgb("direct", out.samples);
-  out.variance = variance_of_mean(out.primal, film_.mean_rgb("primal_sq", out.samples), out.samples);
+  const double seconds = timer.elapsed();
+  GradientImages out = film_.images(samples);
+  out.seconds = seconds;
   if (stats) {
     stats->add_count("samples/paths", uint64_t(pixels) * out.samples * (1 + GPT_OFFSETS));
     stats->set("render/spp", out.samples);

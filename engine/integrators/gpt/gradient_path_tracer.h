@@ -13,7 +13,7 @@
 #include <optional>
 
 #include "render/aux_layers.h"
-#include "render/film.h"
+#include "render/gradient_film.h"
 #include "render/gradient_images.h"
 #include "render/integrator.h"
 #include "render/wavefront/device_counters.h"
@@ -60,7 +60,7 @@ class GradientPathTracer : public Integrator {
   Buffer<Vec4> acc_;   // GPT_ACC_COUNT per pixel of the whole image (gather reads neighbours)
   Buffer<Vec4> pend_;  // GPT_PEND_COUNT per group
   DeviceCounters counters_;
-  Film film_;  // primal, dx, dy, direct, primal_sq
+  GradientFilm film_;
   std::optional<AuxLayers> aux_;
 };
 
