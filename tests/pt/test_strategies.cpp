@@ -4,6 +4,8 @@
 // false-positive rate of 1e-3.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "scene/load_scene.h"
 #include "support/envmap_scene.h"
 #include "support/render.h"
@@ -74,7 +76,17 @@ TEST(PathTracerStrategies, CornellBoxAgrees) { expect_same_expectation("cornell-
 TEST(PathTracerStrategies, CausticsBoxAgrees) { expect_same_expectation("cornell-box-caustics.xml", true); }
 // BSDF sampling alone finds the plates' smallest lights so rarely that its run means are heavy-
 // tailed and a t-test on them is not valid at this budget; light sampling alone is compared.
-TEST(PathTracerStrategies, GlossyPlatesLightSamplingAgrees) { expect_same_expectation("glossy-plates.xml", false); }
+// Light sampling alone is heavy-tailed in the same way on the two smoothest plates (alpha 0.005
+// and 0.02: their lobes are far narrower than the larger lights): it converges to MIS (32768
+// spp), but at 64 spp one run of 40 held 15 times the mean, and the t-test rejected at p < 1e-7
+// or passed depending on the seeds. Those plates are made as rough as the third (0.07) here.
+TEST(PathTracerStrategies, GlossyPlatesLightSamplingAgrees) {
+  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/glossy-plates.xml");
+  for (GdrMaterial& m : scene.materials) {
+    if (m.type == BSDF_ROUGH_PLASTIC) m.alpha_u = m.alpha_v = std::max(m.alpha_u, 0.07f);
+  }
+  expect_same_expectation(scene, "glossy-plates.xml (plates at least 0.07 rough)", false);
+}
 // Its sun is a directional (delta) light, which only light sampling can reach.
 TEST(PathTracerStrategies, EnvironmentLightAgrees) { expect_same_expectation("environment.xml", false); }
 
