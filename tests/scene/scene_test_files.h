@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 #include "scene/load_scene.h"
 
@@ -36,6 +37,23 @@ class TempFolder {
  private:
   std::filesystem::path path_;
 };
+
+// Whether one of the scene's warnings contains every one of `words`.
+inline bool has_warning(const Scene& s, const std::vector<std::string>& words) {
+  for (const std::string& w : s.warnings) {
+    bool all = true;
+    for (const std::string& word : words) all = all && w.find(word) != std::string::npos;
+    if (all) return true;
+  }
+  return false;
+}
+
+// Every warning, one per line (for failure messages).
+inline std::string all_warnings(const Scene& s) {
+  std::string out;
+  for (const std::string& w : s.warnings) out += w + "\n";
+  return out;
+}
 
 // A scene document around `body`.
 inline std::string scene_xml(const std::string& body, const std::string& version = "3.0.0") {

@@ -11,6 +11,8 @@
 
 namespace gdr {
 namespace {
+using test::all_warnings;
+using test::has_warning;
 
 const char* kLight = R"(<emitter type="point"><point name="position" x="0" y="2" z="0"/></emitter>)";
 
@@ -32,21 +34,6 @@ void expect_error(const test::TempFolder& folder, const std::string& body, int l
     EXPECT_NE(msg.find("s.xml:" + std::to_string(line)), std::string::npos) << msg;
     for (const std::string& w : words) EXPECT_NE(msg.find(w), std::string::npos) << msg;
   }
-}
-
-bool has_warning(const Scene& s, const std::vector<std::string>& words) {
-  for (const std::string& w : s.warnings) {
-    bool all = true;
-    for (const std::string& word : words) all = all && w.find(word) != std::string::npos;
-    if (all) return true;
-  }
-  return false;
-}
-
-std::string all_warnings(const Scene& s) {
-  std::string out;
-  for (const std::string& w : s.warnings) out += w + "\n";
-  return out;
 }
 
 TEST(SceneValues, NonFiniteOrNegativeColoursAreErrors) {

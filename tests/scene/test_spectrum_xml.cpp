@@ -15,6 +15,8 @@
 
 namespace gdr {
 namespace {
+using test::all_warnings;
+using test::has_warning;
 
 const char* kLight = R"(<emitter type="point"><point name="position" x="0" y="2" z="0"/></emitter>)";
 
@@ -31,21 +33,6 @@ std::string diffuse(const std::string& spectrum) {
 
 std::string area(const std::string& radiance_element) {
   return "<shape type=\"sphere\"><emitter type=\"area\">\n" + radiance_element + "\n</emitter></shape>";
-}
-
-bool has_warning(const Scene& s, const std::vector<std::string>& words) {
-  for (const std::string& w : s.warnings) {
-    bool all = true;
-    for (const std::string& word : words) all = all && w.find(word) != std::string::npos;
-    if (all) return true;
-  }
-  return false;
-}
-
-std::string all_warnings(const Scene& s) {
-  std::string out;
-  for (const std::string& w : s.warnings) out += w + "\n";
-  return out;
 }
 
 void expect_ulp(float a, double b, const char* what) {
