@@ -15,18 +15,19 @@ void set_to_world(GdrCamera& cam, const Mat4d& m) {
     for (int c = 0; c < 4; ++c) cam.to_world[4 * r + c] = static_cast<float>(m.m[r][c]);
 }
 
-// Field of view in degrees and its axis; focal_length ("50mm") refers to the diagonal of a
-// 36x24 mm film, as in Mitsuba.
+// Field of view in degrees and its axis; focal_length refers to the diagonal of a 36x24 mm film,
+// as in Mitsuba, and a sensor with neither fov nor focal_length has Mitsuba's 50mm.
 void read_fov(const Props& p, double* fov, std::string* axis) {
   *axis = p.get_string("fov_axis", "x");
-  if (p.has("focal_length")) {
+  if (!p.has("fov")) {
     const XmlNode* n = p.find("focal_length");
     std::string text = p.get_string("focal_length", "50mm");
     char* end = nullptr;
     double f = std::strtod(text.c_str(), &end);
     std::string unit = end ? std::string(end) : "";
     if (end == text.c_str() || !(unit.empty() || unit == "mm") || !(f > 0)) {
-      throw InputError(n->file, n->line, "focal_length '" + text + "' is not a length in mm");
+      const XmlNode& where = n ? *n : p.node();
+      throw InputError(where.file, where.line, "focal_length '" + text + "' is not a length in mm");
     }
     *fov = 2.0 * std::atan(std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / (2.0 * f)) * 180.0 / M_PI;
     *axis = "diagonal";

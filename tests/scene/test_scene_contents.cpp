@@ -334,7 +334,11 @@ TEST(SceneSensor, FovAxesFocalLengthAndFilters) {
   // 50 mm on 35 mm film: the diagonal (43.27 mm) spans 2 atan(43.27 / 100).
   GdrCamera lens = camera(R"(<string name="focal_length" value="50mm"/>)");
   EXPECT_NEAR(std::hypot(lens.tan_half_fov_x, lens.tan_half_fov_y), std::sqrt(36.0 * 36 + 24 * 24) / 100, 1e-6);
-  EXPECT_THROW(camera(R"(<string name="fov_axis" value="sideways"/>)"), InputError);
+  // Neither fov nor focal_length: Mitsuba's 50 mm (not a 45 degree fov).
+  GdrCamera plain = camera("");
+  EXPECT_FLOAT_EQ(plain.tan_half_fov_x, lens.tan_half_fov_x);
+  EXPECT_FLOAT_EQ(plain.tan_half_fov_y, lens.tan_half_fov_y);
+  EXPECT_THROW(camera(R"(<float name="fov" value="45"/><string name="fov_axis" value="sideways"/>)"), InputError);
 }
 
 TEST(SceneDescribe, SummaryNamesSizesFeaturesAndWarnings) {
