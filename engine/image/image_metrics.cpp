@@ -33,34 +33,6 @@ void ramp(double t, float* rgb) {
 
 }  // namespace
 
-ImageError compare_images(const Image& a, const Image& b) {
-  check_sizes(a, b);
-  std::vector<float> pa = a.rgb_layer(""), pb = b.rgb_layer("");
-  ImageError e;
-  double sum_a = 0, sum_b = 0;
-  for (size_t i = 0; i < pa.size(); ++i) {
-    double x = pa[i], y = pb[i];
-    if (!std::isfinite(x) || !std::isfinite(y)) {
-      ++e.skipped;
-      continue;
-    }
-    double d = x - y;
-    e.mse += d * d;
-    e.rel_mse += d * d / (y * y + kEps);
-    e.mape += std::fabs(d) / (std::fabs(y) + kEps);
-    sum_a += x;
-    sum_b += y;
-    ++e.values;
-  }
-  if (e.values > 0) {
-    e.mse /= e.values;
-    e.rel_mse /= e.values;
-    e.mape /= e.values;
-  }
-  e.brightness = sum_b != 0 ? sum_a / sum_b : 0.0;
-  return e;
-}
-
 ImageSetError compare_image_set(const std::vector<Image>& runs, const Image& reference) {
   if (runs.empty()) throw Error("compare: no images to compare with the reference");
   std::vector<std::vector<float>> values;

@@ -17,10 +17,8 @@ struct ImageError {
   size_t skipped = 0;
 };
 
-// Compares the R,G,B channels of `a` against reference `b`; throws gdr::Error when the sizes differ.
-ImageError compare_images(const Image& a, const Image& b);
-
-// Several renders of one image with independent seeds against a reference: the mean of their
+// The R,G,B channels of one or several renders of one image (independent seeds) against a
+// reference: the mean of their
 // errors, and the relMSE split into bias^2 and variance. Per value (pixel and channel) with
 // mean m and unbiased sample variance s^2 over the K runs, the mean relMSE is
 // (m - ref)^2 + (K-1)/K s^2 (over ref^2 + 1e-2), whose expectation is bias^2 + variance:
