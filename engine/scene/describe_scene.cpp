@@ -23,6 +23,12 @@ std::string describe_scene(const Scene& scene) {
   }
   out << (first ? "" : ")") << "\n";
   out << "resolution: " << scene.camera.width << "x" << scene.camera.height << ", spp: " << scene.spp << "\n";
+  static const char* const kFilters[] = {"box", "tent", "gaussian"};
+  const GdrCamera& cam = scene.camera;
+  out << "film filter: " << (cam.filter >= 0 && cam.filter < 3 ? kFilters[cam.filter] : "unknown") << " (radius "
+      << cam.filter_radius << " px), sample_border: "
+      << (cam.sample_border ? "on (the filter's support past the image is sampled)" : "off (samples inside the image)")
+      << "\n";
   out << "integrator: " << (scene.integrator.empty() ? "(none given)" : scene.integrator)
       << ", max_depth: " << scene.max_depth << (scene.max_depth < 0 ? " (unbounded)" : "") << "\n";
   out << "bounds: (" << scene.bounds_min[0] << ", " << scene.bounds_min[1] << ", " << scene.bounds_min[2] << ") - ("

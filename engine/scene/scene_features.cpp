@@ -107,6 +107,11 @@ std::string SceneFeatures::describe() const {
   out << "BSDFs: " << (bsdfs.empty() ? "none" : list_names(bsdfs)) << "\n";
   out << "lights: " << (lights.empty() ? "none" : list_names(lights)) << "\n";
   if (textures) out << "textures: on (bitmap/checkerboard reflectance)\n";
+  if (bsdf[BSDF_PLASTIC] || bsdf[BSDF_ROUGH_PLASTIC]) {
+    out << "coating tables: on (plastic: the coating's internal reflectance"
+        << (bsdf[BSDF_ROUGH_PLASTIC] ? ", and roughplastic's external transmittance," : "")
+        << " tabulated per material by a kernel at upload)\n";
+  }
   if (specular_chains()) {
     out << "specular chains: on (";
     if (delta_surfaces) {

@@ -354,6 +354,19 @@ TEST(SceneDescribe, SummaryNamesSizesFeaturesAndWarnings) {
   EXPECT_NE(d.find("area triangles"), std::string::npos) << d;
   EXPECT_NE(d.find("specular chains: on (1 delta material: glass (dielectric))"), std::string::npos) << d;
   EXPECT_NE(d.find("hair"), std::string::npos) << d;
+  EXPECT_NE(d.find("film filter: gaussian (radius 2 px), sample_border: off"), std::string::npos) << d;
+  EXPECT_EQ(d.find("coating tables"), std::string::npos) << d;
+}
+
+TEST(SceneDescribe, SaysWhichFilmAndCoatingTablesTheSceneUses) {
+  test::TempFolder folder;
+  Scene s = load_scene(folder.write("s.xml", test::scene_xml(R"(<sensor type="perspective"><film type="hdrfilm">
+      <boolean name="sample_border" value="true"/><rfilter type="box"/></film></sensor>
+    <shape type="sphere"><bsdf type="roughplastic"/></shape>)")));
+  std::string d = describe_scene(s);
+  EXPECT_NE(d.find("film filter: box (radius 0.5 px), sample_border: on"), std::string::npos) << d;
+  EXPECT_NE(d.find("coating tables: on (plastic: the coating's internal reflectance, and roughplastic's"),
+            std::string::npos) << d;
 }
 
 }  // namespace
