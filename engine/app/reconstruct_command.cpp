@@ -10,12 +10,15 @@
 namespace gdr {
 
 int reconstruct_command(const std::string& in_exr, const std::string& out_path,
-                        const ReconSettings& settings, Context& ctx, Stats* stats) {
+                        const std::optional<ReconSettings>& settings, Context& ctx, Stats* stats) {
   Image in = read_image(in_exr);
-  Image out = gradient_image(ctx, gradient_layers_from(in, in_exr, settings.norm == ReconNorm::Weighted), settings,
-                             stats);
-  log::info("reconstructed ", in_exr, " (", recon_norm_name(settings.norm), ", alpha ",
-            settings.alpha, ")");
+  const bool weighted = settings && settings->norm == ReconNorm::Weighted;
+  Image out = gradient_image(ctx, gradient_layers_from(in, in_exr, weighted), settings, stats);
+  if (settings) {
+    log::info("reconstructed ", in_exr, " (", recon_norm_name(settings->norm), ", alpha ", settings->alpha, ")");
+  } else {
+    log::info("wrote the primal of ", in_exr, " (no reconstruction)");
+  }
   ImageOutputs images = image_outputs(out_path);
   OutputSet outputs;
   add_image_outputs(outputs, images, out);

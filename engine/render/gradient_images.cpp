@@ -21,7 +21,7 @@ std::optional<ReconSettings> recon_from_params(const IntegratorParams& p) {
 
 RenderResult gradient_result(Context& ctx, const GradientImages& layers, const IntegratorParams& params,
                              Stats* stats) {
-  ScopedTimer t(stats, "recon/total");
+  ScopedTimer t(nullptr, "");  // gradient_image records recon/total
   RenderResult result;
   result.image = gradient_image(ctx, layers, recon_from_params(params), stats);
   result.samples = layers.samples;
@@ -100,6 +100,7 @@ GradientLayers read_layers(const Image& in, const std::string& path, const std::
 }  // namespace
 
 Image gradient_image(Context& ctx, const GradientImages& g, const std::optional<ReconSettings>& recon, Stats* stats) {
+  ScopedTimer timer(stats, "recon/total");
   std::vector<float> rgb = g.primal;
   const bool weighted = recon && recon->norm == ReconNorm::Weighted;
   const bool halves = has_half(g.halves[0], g.primal.size()) && has_half(g.halves[1], g.primal.size());

@@ -50,6 +50,10 @@ TEST(ReconstructCommand, RoundTripThroughExr) {
     EXPECT_TRUE(fs::exists(dir / (std::string("out_") + norm + ".png")));
     EXPECT_EQ(stats.to_json()["recon"]["norm"], norm[1] == '1' ? "L1" : "L2");
   }
+  // No reconstruction: the image is the primal, as a render with --recon none writes it.
+  std::string none = (dir / "out_none.exr").string();
+  EXPECT_EQ(reconstruct_command((dir / "in.exr").string(), none, std::nullopt, test::default_context(), nullptr), 0);
+  EXPECT_EQ(read_image(none).rgb_layer(""), g.primal);
   fs::remove_all(dir);
 }
 
