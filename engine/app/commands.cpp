@@ -92,8 +92,7 @@ int run_command(const Options& options) {
                           : options.output;
     // Outputs are checked before the reconstruction runs.
     checked_render_outputs(out, options.stats_path);
-    std::optional<ReconSettings> recon = recon_from_params(IntegratorParams(options.integrator_params));
-    int code = reconstruct_command(options.reconstruct, out, recon, ctx, &stats);
+    int code = reconstruct_command(options.reconstruct, out, IntegratorParams(options.integrator_params), ctx, &stats);
     if (!options.stats_path.empty()) stats.write_json(options.stats_path);
     return code;
   }

@@ -133,14 +133,15 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         "roughness at or below which a vertex counts as glossy/specular (not reconnected; default 0.001)")
       ->check(kFiniteNonNegative);
   param("--recon", "recon",
-        "Poisson reconstruction: l1 (default) | l2 | weighted (L2 with each term weighted by the inverse of its "
-        "per-pixel variance estimate) | none")
+        "Poisson reconstruction: weighted (default: L2 with each term weighted by the inverse of its "
+        "per-pixel variance estimate) | l1 | l2 | none")
       ->check(CLI::IsMember({"l1", "l2", "weighted", "none"}));
   param("--recon-solver", "recon_solver",
         "Poisson solver, also for --reconstruct: fast (multigrid-preconditioned CG, direct DCT solve for L2; "
         "default) | cg (the published baseline: plain CG, 50 iterations per solve)")
       ->check(CLI::IsMember({"fast", "cg"}));
-  param("--alpha", "alpha", "weight of the primal in the screened Poisson solve, also for --reconstruct (default 0.2)")
+  param("--alpha", "alpha", "weight of the primal in the screened Poisson solve, also for --reconstruct (default 1 for weighted, 0.2 for "
+        "l1 and l2)")
       ->check(kFinitePositive);
   app.footer("Integrators:\n" + describe_integrators());
   auto* verbose = app.add_flag("-v,--verbose", o.verbose, "More log output");

@@ -6,6 +6,7 @@
 
 #include "device/context.h"
 #include "recon/reconstruct.h"
+#include "render/integrator_params.h"
 #include "stats/stats.h"
 
 namespace gdr {
@@ -19,5 +20,9 @@ namespace gdr {
 // Throws gdr::Error naming the file and the missing layer for an incomplete input. Returns 0.
 int reconstruct_command(const std::string& in_exr, const std::string& out_path,
                         const std::optional<ReconSettings>& settings, Context& ctx, Stats* stats);
+// The same with the reconstruction from the command line's parameters (recon, recon_solver,
+// alpha); without `recon`, the default (weighted) where the file holds the halves, else L1.
+int reconstruct_command(const std::string& in_exr, const std::string& out_path, const IntegratorParams& params,
+                        Context& ctx, Stats* stats);
 
 }  // namespace gdr

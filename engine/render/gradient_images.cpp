@@ -11,7 +11,7 @@ namespace gdr {
 const std::vector<std::string> kReconParams = {"recon", "recon_solver", "alpha"};
 
 std::optional<ReconSettings> recon_from_params(const IntegratorParams& p) {
-  std::string norm = p.choice("recon", "l1", {"l1", "l2", "weighted", "none"});
+  std::string norm = p.choice("recon", "weighted", {"l1", "l2", "weighted", "none"});
   if (norm == "none") return std::nullopt;
   // The weighted form's weights already set the primal's share against the gradients': its alpha
   // stays 1 unless given (measured better than 0.2 there on the Cornell box and its caustics).

@@ -219,23 +219,25 @@ TEST(Cli, ReconstructWithoutLayersIsRejected) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("recon.exr")));
 }
 
-// A render with --recon weighted saves the variance layers and the halves' layers, from which
-// --reconstruct --recon weighted rebuilds it; a render without the halves is refused by name.
+// A render with the default reconstruction (weighted) saves the variance layers and the halves'
+// layers, from which --reconstruct rebuilds it; a render without the halves is refused by name
+// when --recon weighted is asked for.
 TEST(Cli, WeightedReconstructionSavesAndReadsItsLayers) {
   TempDir dir;
-  CliResult render =
-      run_gdrender(kCornell + " --integrator gpt --recon weighted -D res=16 --spp 4 -o weighted.exr", dir);
+  CliResult render = run_gdrender(kCornell + " --integrator gpt -D res=16 --spp 4 -o weighted.exr --stats w.json", dir);
   ASSERT_EQ(render.code, 0) << render.output;
   Image img = read_image(dir.file("weighted.exr"));
   for (const char* layer : {"primal_variance", "dx_variance", "dy_variance", "even.primal", "even.direct",
                             "odd.dx_variance", "odd.dy"}) {
     EXPECT_TRUE(img.has_rgb_layer(layer)) << layer;
   }
-  CliResult r = run_gdrender("--reconstruct weighted.exr --recon weighted -o again.exr", dir);
+  std::ifstream stats_file(dir.file("w.json"));
+  EXPECT_EQ(nlohmann::json::parse(stats_file)["recon"]["norm"], "weighted");
+  CliResult r = run_gdrender("--reconstruct weighted.exr -o again.exr", dir);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(read_image(dir.file("again.exr")).rgb_layer(""), img.rgb_layer(""));
 
-  CliResult l1 = run_gdrender(kCornell + " --integrator gpt -D res=16 --spp 4 -o l1.exr", dir);
+  CliResult l1 = run_gdrender(kCornell + " --integrator gpt --recon l1 -D res=16 --spp 4 -o l1.exr", dir);
   ASSERT_EQ(l1.code, 0) << l1.output;
   EXPECT_TRUE(read_image(dir.file("l1.exr")).has_rgb_layer("dx_variance"));
   EXPECT_FALSE(read_image(dir.file("l1.exr")).has_rgb_layer("even.primal"));
@@ -244,6 +246,10 @@ TEST(Cli, WeightedReconstructionSavesAndReadsItsLayers) {
   EXPECT_NE(r.output.find("l1.exr"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("'even.primal'"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir.file("refused.exr")));
+  // Without --recon, a render saved without the halves is reconstructed by L1.
+  r = run_gdrender("--reconstruct l1.exr -o again_l1.exr --stats l1.json", dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(read_image(dir.file("again_l1.exr")).rgb_layer(""), read_image(dir.file("l1.exr")).rgb_layer(""));
 }
 
 // --compare over two renders: runs at 1.2 and 1.4 against a reference of 1 everywhere. Per value
