@@ -87,6 +87,29 @@ TEST(LightTracer, GlossyPlatesAgreeWithPt) {
   expect_agrees_with_pt(small_film(scene, 32), "glossy-plates.xml (plates at least 0.2 rough)", 16, 16, 6);
 }
 
+// A coarse diffuse sphere (4 x 8 facets) with smooth vertex normals on a floor before a wall,
+// under a small area light: its shading normals differ from its facets' by up to ~40 degrees,
+// where importance transport needs the shading-normal correction to give pt's image.
+TEST(LightTracer, ShadingNormalsAgreeWithPt) {
+  test::SceneBuilder b;
+  GdrMaterial m{};
+  m.type = BSDF_DIFFUSE;
+  m.reflectance_texture = -1;
+  m.coating_table = -1;
+  m.reflectance[0] = m.reflectance[1] = m.reflectance[2] = 0.7f;
+  int white = b.material(m, "white");
+  MeshData sphere = make_sphere(4, 8);
+  for (size_t v = 0; v < sphere.vertex_count(); ++v) sphere.positions[3 * v + 2] += 3.0f;
+  b.shape(sphere, white, 0.0f, "sphere");
+  b.shape(test::quad_mesh({-3, -1, 0}, {-3, -1, 6}, {3, -1, 6}, {3, -1, 0}), white, 0.0f, "floor");
+  b.shape(test::quad_mesh({-3, -1, 6}, {-3, 3, 6}, {3, 3, 6}, {3, -1, 6}), white, 0.0f, "wall");
+  b.shape(test::quad_mesh({-0.75f, 2.5f, 2.25f}, {0.75f, 2.5f, 2.25f}, {0.75f, 2.5f, 3.75f}, {-0.75f, 2.5f, 3.75f}),
+          white, 5.0f, "light");
+  Scene scene = b.finish(test::camera_looking_z(0.0f, 0.3f, 0.5f, 45.0f, 24));
+  ASSERT_TRUE(scene.shapes[0].flags & SHAPE_HAS_NORMALS);
+  expect_agrees_with_pt(scene, "coarse smooth sphere", 64, 64, 4);
+}
+
 // max_depth 1 is the emission seen directly: the camera rays' part alone, which is exactly what
 // pt's camera rays see (same pixel sampler, same seed: the same image bit for bit).
 TEST(LightTracer, DirectlyVisibleEmissionIsPtsFirstSegment) {
