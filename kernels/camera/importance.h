@@ -93,17 +93,33 @@ inline float camera_pdf_dir(const GdrCamera* cam, float cos_theta) {
   return 1.0f / (camera_image_area(cam) * cos_theta * cos_theta * cos_theta);
 }
 
-// Pixel (x, y)'s normalized filter h_p at film position `raster`: the filter's value at the
-// offset from the pixel's centre over its mass on the offsets the pixel samples (filter_range),
-// so that for each pixel h_p integrates to 1 over the film, as pt's samples of it do.
-inline float camera_pixel_weight(const GdrCamera* cam, int x, int y, float2 raster) {
+// One axis of a pixel's normalized filter: for pixel p of an axis of `size` pixels at film
+// coordinate `raster`, the filter's value at the offset from the pixel's centre over its mass on
+// the offsets the pixel samples (filter_range); 0 outside them. `full_mass`: the filter's mass
+// over [-r, r] (camera_filter_full_mass), the mass of every pixel whose range the image does
+// not cut, passed in so that a loop over pixels computes it once (the gaussian's cdf is costly).
+inline float camera_axis_weight_full(const GdrCamera* cam, int p, int size, float raster, float full_mass) {
   float r = cam->filter_radius;
-  float tx = raster.x - ((float)x + 0.5f), ty = raster.y - ((float)y + 0.5f);
-  float2 rx = filter_range(cam, x, cam->width), ry = filter_range(cam, y, cam->height);
-  if (tx < rx.x || tx > rx.y || ty < ry.x || ty > ry.y) return 0.0f;
-  float mass = filter_mass(cam->filter, r, rx) * filter_mass(cam->filter, r, ry);
-  if (!(mass > 0.0f)) return 0.0f;
-  return filter_eval(cam->filter, r, tx) * filter_eval(cam->filter, r, ty) / mass;
+  float t = raster - ((float)p + 0.5f);
+  float2 range = filter_range(cam, p, size);
+  if (t < range.x || t > range.y) return 0.0f;
+  float mass = range.x == -r && range.y == r ? full_mass : filter_mass(cam->filter, r, range);
+  return mass > 0.0f ? filter_eval(cam->filter, r, t) / mass : 0.0f;
+}
+
+inline float camera_filter_full_mass(const GdrCamera* cam) {
+  float r = cam->filter_radius;
+  return filter_mass(cam->filter, r, (float2)(-r, r));
+}
+
+inline float camera_axis_weight(const GdrCamera* cam, int p, int size, float raster) {
+  return camera_axis_weight_full(cam, p, size, raster, camera_filter_full_mass(cam));
+}
+
+// Pixel (x, y)'s normalized filter h_p at film position `raster` (the product of its axes), so
+// that for each pixel h_p integrates to 1 over the film, as pt's samples of it do.
+inline float camera_pixel_weight(const GdrCamera* cam, int x, int y, float2 raster) {
+  return camera_axis_weight(cam, x, cam->width, raster.x) * camera_axis_weight(cam, y, cam->height, raster.y);
 }
 
 // The pixels whose filter may cover film position `raster`: [lo.x, hi.x] x [lo.y, hi.y],
