@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "integrators/bidir/light_tracer.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "integrators/pt/path_tracer.h"
 #include "util/error.h"
@@ -26,6 +27,11 @@ std::vector<IntegratorEntry> make_registry() {
        true, join(kGptParams, kReconParams), {"gpt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<GradientPathTracer>(in, gpt_settings(p), p);
+       }},
+      {"lt", "light tracer: light subpaths connected to the camera and splatted, emission seen directly by camera rays",
+       false, kLtParams, {"ptracer", "lt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<LightTracer>(in, lt_settings(p));
        }},
   };
 }

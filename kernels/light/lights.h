@@ -104,6 +104,17 @@ inline float area_pdf(const SceneData* s, int index, float area, float dist, flo
   return light_pmf(s, index) * dist * dist / (cos_light * area);
 }
 
+// Spot emission toward `dir` (unit, from the light) relative to its intensity: Mitsuba's falloff,
+// linear in angle between the beam width and the cutoff; 0 outside the cone.
+inline float spot_falloff(__global const GdrLight* l, float3 dir) {
+  float cos_theta = dot(dir, vload3(0, l->direction));
+  if (cos_theta <= l->cos_cutoff) return 0.0f;
+  if (cos_theta >= l->cos_falloff) return 1.0f;
+  float cutoff = acos(l->cos_cutoff), beam = acos(l->cos_falloff);
+  float angle = acos(clamp(cos_theta, -1.0f, 1.0f));
+  return cutoff > beam ? (cutoff - angle) / (cutoff - beam) : 0.0f;
+}
+
 // Evaluates the light point already chosen in ls (ls->bary for area lights, ls->wi for lights
 // at infinity) as seen from p: direction, distance, arriving radiance and pdf. Next-event
 // estimation samples the point first; a gradient-domain offset path reconnects to the same point
@@ -138,14 +149,8 @@ inline int light_connect(const SceneData* s, int index, float3 p, LightSample* l
       ls->dist = dist;
       float falloff = 1.0f;
       if (l->type == LIGHT_SPOT) {
-        float cos_theta = dot(-ls->wi, vload3(0, l->direction));
-        if (cos_theta <= l->cos_cutoff) return 0;
-        if (cos_theta < l->cos_falloff) {
-          // Mitsuba's spot: linear in angle between the beam width and the cutoff.
-          float cutoff = acos(l->cos_cutoff), beam = acos(l->cos_falloff);
-          float angle = acos(clamp(cos_theta, -1.0f, 1.0f));
-          falloff = cutoff > beam ? (cutoff - angle) / (cutoff - beam) : 0.0f;
-        }
+        if (dot(-ls->wi, vload3(0, l->direction)) <= l->cos_cutoff) return 0;
+        falloff = spot_falloff(l, -ls->wi);
       }
       ls->radiance = vload3(0, l->radiance) * (falloff / dist2);
       ls->pdf = pmf;

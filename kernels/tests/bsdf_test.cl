@@ -1,6 +1,6 @@
 // Batched access to the BSDF interface for the host tests and benchmarks: the host only draws
 // inputs and does statistics; every value comes from kernels/bsdf.
-#include "bsdf/bsdf.h"
+#include "bsdf/transport.h"
 #include "core/rng.h"
 
 // One sample per item: wo[i] (xyz), uniforms u[i] (xyz). Outputs: wi_pdf = (wi, pdf),
@@ -109,4 +109,46 @@ __kernel void bsdf_half_vector_batch(__global const float4* wo, __global const f
   h_ok[i] = (float4)(h, (float)ok);
   jacobian[i] = !ok ? 0.0f : reflect ? half_jacobian_reflect(w, h)
                                      : half_jacobian_refract(o, w, h, eta_rel);
+}
+
+// Transport modes (bsdf/transport.h). out[i] = (bsdf_eval_transport(wo[i], wi[i], mode), pdf)
+// and rev[i] = (0, 0, 0, reverse pdf).
+__kernel void bsdf_eval_transport_batch(__global const GdrMaterial* mat, __global const float* coating,
+                                        float4 reflectance, int mode, __global const float4* wo,
+                                        __global const float4* wi, uint n, __global float4* out,
+                                        __global float4* rev) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
+  float pdf, pdf_rev;
+  float3 f = bsdf_eval_pdf(&b, wo[i].xyz, wi[i].xyz, mode, &pdf, &pdf_rev);
+  out[i] = (float4)(f, pdf);
+  rev[i] = (float4)(0.0f, 0.0f, 0.0f, pdf_rev);
+}
+
+// bsdf_sample_transport with uniforms u[i]: weight_eta = (weight, eta), flags = (ok, delta,
+// transmitted, 0).
+__kernel void bsdf_sample_transport_batch(__global const GdrMaterial* mat, __global const float* coating,
+                                          float4 reflectance, int mode, __global const float4* wo,
+                                          __global const float4* u, uint n, __global float4* wi_pdf,
+                                          __global float4* weight_eta, __global int4* flags) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  Bsdf b = bsdf_from_material(mat, coating, reflectance.xyz);
+  BsdfSample s;
+  int ok = bsdf_sample_transport(&b, wo[i].xyz, u[i].xyz, mode, &s);
+  wi_pdf[i] = ok ? (float4)(s.wi, s.pdf) : (float4)(0.0f);
+  weight_eta[i] = ok ? (float4)(s.weight, s.eta) : (float4)(0.0f);
+  flags[i] = ok ? (int4)(1, s.delta, s.transmitted, 0) : (int4)(0);
+}
+
+// c[i] = shading_normal_correction for world wo[i], wi[i], geometric normal ng[i] and the
+// shading normal ns[i].
+__kernel void shading_normal_correction_batch(__global const float4* wo, __global const float4* wi,
+                                              __global const float4* ng, __global const float4* ns, uint n,
+                                              __global float* c) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  c[i] = shading_normal_correction(wo[i].xyz, wi[i].xyz, ng[i].xyz, dot(wo[i].xyz, ns[i].xyz),
+                                   dot(wi[i].xyz, ns[i].xyz));
 }

@@ -1,0 +1,32 @@
+// The splat film: contributions to any pixel (light subpaths seen by the camera), gathered into a
+// film layer deterministically: same seed, same image, on every run and device. Each path writes
+// its contribution of a step into its own slot (kernels/path/splat.h: splat_write); gather()
+// then adds the slots in slot order into the pixels their filter covers (each pixel owned by one
+// work item, no atomics) and empties the slots for the next step.
+#pragma once
+#include <string>
+
+#include "device/context.h"
+#include "render/wavefront/kernel_factory.h"
+#include "scene/scene.h"
+#include "shared/splat_types.h"
+
+namespace gdr {
+
+class SplatFilm {
+ public:
+  // `program`: the integrator's program (it holds path_splat_gather); `slots`: paths in flight.
+  SplatFilm(Context& context, const KernelFactory& kernels, const std::string& program, size_t slots);
+
+  Buffer<GdrSplat>& slots() { return slots_; }  // the kernels' `splats` argument
+
+  // Adds slots [0, count) into `film` (a film layer of the camera's size) and empties them.
+  // `bands`: rows are split into this many work items (the image does not depend on it).
+  void gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film, cl_uint bands = 0);
+
+ private:
+  Kernel gather_;
+  Buffer<GdrSplat> slots_;
+};
+
+}  // namespace gdr

@@ -1,0 +1,46 @@
+// Camera importance for the host tests (kernels/camera/importance.h): the host draws the inputs
+// and does the statistics; every value comes from the kernels.
+#include "camera/importance.h"
+
+// For film position raster[i].xy and distance raster[i].z along its camera ray: the ray's point
+// projected back. out[i] = (raster x, raster y, projected (1) or not (0), cos theta).
+__kernel void camera_round_trip(__global const GdrCamera* camera, uint n, __global const float4* raster,
+                                __global float4* out) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  GdrCamera cam = *camera;
+  float3 o, d;
+  float tnear, tfar;
+  camera_ray(&cam, raster[i].x, raster[i].y, &o, &d, &tnear, &tfar);
+  CameraProjection pr;
+  int ok = camera_project(&cam, o + raster[i].z * d, &pr);
+  out[i] = ok ? (float4)(pr.raster, 1.0f, pr.cos_theta) : (float4)(0.0f);
+}
+
+// For world direction dir[i] from the camera (the point at distance `dist` along it): (raster x, raster y, inside the film (1) or not,
+// cos theta) and (We, pdf_dir, 0, 0).
+__kernel void camera_importance(__global const GdrCamera* camera, float dist, uint n, __global const float4* dir,
+                                __global float4* raster, __global float4* importance) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  GdrCamera cam = *camera;
+  CameraProjection pr;
+  int ok = camera_project(&cam, camera_position(&cam) + dist * dir[i].xyz, &pr);
+  raster[i] = ok ? (float4)(pr.raster, 1.0f, pr.cos_theta) : (float4)(0.0f);
+  importance[i] = ok ? (float4)(camera_we(&cam, pr.cos_theta), camera_pdf_dir(&cam, pr.cos_theta), 0.0f, 0.0f)
+                     : (float4)(0.0f);
+}
+
+// out[y * width + x] = sum over the film positions raster[0 .. n) of pixel (x, y)'s normalized
+// filter, gathered over camera_pixel_footprint as a splat would.
+__kernel void camera_pixel_weights(__global const GdrCamera* camera, uint n, __global const float2* raster,
+                                   __global float* out) {
+  if (get_global_id(0) != 0) return;
+  GdrCamera cam = *camera;
+  for (uint i = 0; i < n; ++i) {
+    int2 lo, hi;
+    camera_pixel_footprint(&cam, raster[i], &lo, &hi);
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) out[y * cam.width + x] += camera_pixel_weight(&cam, x, y, raster[i]);
+  }
+}
