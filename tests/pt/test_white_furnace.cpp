@@ -40,6 +40,7 @@ TEST_P(WhiteFurnace, RadianceIsLeOverOneMinusAlbedo) {
   EXPECT_LT(std::fabs(mean - expected), 5 * se + 1e-6) << "mean " << mean << " expected " << expected << " se " << se;
   EXPECT_GT(se, 0.0);  // a noise-free image would mean the estimator did not sample anything
   EXPECT_EQ(stats.count("samples/nonfinite_rejected"), 0u);
+  EXPECT_GT(stats.count("samples/paths"), 0u);  // the counters above were recorded, not absent
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, WhiteFurnace, testing::Values(1.0f, 1e-3f, 1e5f));

@@ -24,6 +24,9 @@ inline Rendered render_checked(const Scene& scene, uint32_t seed, int spp, int m
   Rendered r;
   r.rgb = render_pt(scene, settings, &stats);
   r.nonfinite = stats.count("samples/nonfinite_rejected");
+  // The counters were read from the render's own stats (a render that recorded nothing would
+  // make the non-finite count vacuous).
+  EXPECT_EQ(stats.count("samples/paths"), uint64_t(scene.camera.width) * scene.camera.height * spp);
   return r;
 }
 

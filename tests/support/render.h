@@ -11,23 +11,31 @@
 
 namespace gdr::test {
 
-// The inputs of an integrator for `scene` (which must outlive this).
+// The inputs of an integrator for `scene` (which must outlive this), on `context` (default: the
+// shared one, which records no stats).
 struct SceneOnDevice {
-  explicit SceneOnDevice(const Scene& s, Stats* stats = nullptr)
-      : scene(s), embree(s, BuildQuality::Low, stats), device(default_context(), s) {}
-  RenderInputs inputs() { return RenderInputs{default_context(), scene, embree, device}; }
+  explicit SceneOnDevice(const Scene& s, Stats* stats = nullptr, Context& context = default_context())
+      : scene(s), context(context), embree(s, BuildQuality::Low, stats), device(context, s) {}
+  RenderInputs inputs() { return RenderInputs{context, scene, embree, device}; }
 
   const Scene& scene;
+  Context& context;
   EmbreeScene embree;
   DeviceScene device;
 };
 
-// The RGB image (interleaved) of `scene` rendered with `settings`.
+// The RGB image (interleaved) of `scene` rendered with `settings`. With `stats`, on a context of
+// its own that records into them: the kernels' counters (rejected non-finite samples, paths)
+// report to their context's stats, so the shared context would leave them unread.
 inline std::vector<float> render_pt(const Scene& scene, const RenderSettings& settings, Stats* stats = nullptr,
                                     const PtSettings& pt = {}) {
-  SceneOnDevice on_device(scene, stats);
-  PathTracer tracer(on_device.inputs(), pt);
-  return tracer.render(settings).image.rgb_layer("");
+  if (!stats) {
+    SceneOnDevice on_device(scene);
+    return PathTracer(on_device.inputs(), pt).render(settings).image.rgb_layer("");
+  }
+  Context context(select_device(""), stats);
+  SceneOnDevice on_device(scene, stats, context);
+  return PathTracer(on_device.inputs(), pt).render(settings).image.rgb_layer("");
 }
 
 }  // namespace gdr::test
