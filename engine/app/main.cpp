@@ -24,7 +24,13 @@ int main(int argc, char** argv) {
   // Rank 0 speaks for the job; the others' lines would repeat its own.
   if (!gdr::cluster::root()) gdr::log::set_muted(true);
   gdr::Options options;
-  if (auto code = gdr::parse_options(argc, argv, options)) return *code;
+  std::optional<int> code = gdr::parse_options(argc, argv, options);
+  // A rank whose command line ends it (refused, or --help) must not leave the others waiting.
+  if (gdr::cluster::stopped_early(code.has_value(),
+                                  code && *code != 0 ? "its command line was refused (its message is above)" : "")) {
+    return code ? *code : 1;
+  }
+  if (code) return *code;
   gdr::log::set_level(options.quiet ? gdr::log::Level::Quiet
                       : options.verbose ? gdr::log::Level::Verbose
                                         : gdr::log::Level::Info);

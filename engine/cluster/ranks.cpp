@@ -174,6 +174,20 @@ void all_or_none(const std::function<void()>& setup) {
   throw JobFailed();
 }
 
+bool stopped_early(bool stopped, const std::string& why) {
+  if (g_size <= 1) return stopped;
+  // "S" marks a rank that stopped, then its host and reason.
+  std::vector<std::string> reports = gather_to_root(stopped ? "S" + host() + "\n" + why : std::string());
+  if (!any(stopped)) return false;
+  for (int r = 0; r < int(reports.size()); ++r) {
+    const size_t cut = reports[r].find('\n');
+    if (reports[r].empty() || cut + 1 == reports[r].size()) continue;
+    std::fprintf(stderr, "gdrender: rank %d of %d (%s): %s\n", r, g_size, reports[r].substr(1, cut - 1).c_str(),
+                 reports[r].substr(cut + 1).c_str());
+  }
+  return true;
+}
+
 void abort_job(const std::string& message) {
   std::fprintf(stderr, "gdrender: rank %d of %d (%s): error: %s\n", g_rank, g_size, host().c_str(), message.c_str());
   std::fflush(stderr);

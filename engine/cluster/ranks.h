@@ -45,6 +45,10 @@ void barrier();
 // that no rank waits for one that is gone. Alone, the exception passes through unchanged.
 void all_or_none(const std::function<void()>& setup);
 
+// True on every rank when `stopped` is true on any (a collective); rank 0 then prints, for each
+// rank that stopped with a non-empty `why`, its rank, host and `why`. Alone: `stopped`.
+bool stopped_early(bool stopped, const std::string& why);
+
 // Thrown on every rank when all_or_none found a failure; rank 0 has printed the reasons.
 class JobFailed : public std::exception {
  public:
