@@ -97,6 +97,7 @@ void add_rank_stats(Stats& stats, const DeviceInfo& device, const RenderResult& 
   mine["passes"] = loop.passes;
   mine["pass_seconds"] = loop.pass_seconds;
   mine["wait_seconds"] = loop.wait_seconds;
+  mine["loop_seconds"] = loop.seconds;
   mine["render_seconds"] = result.seconds;
   mine["reduce_seconds"] = stats.seconds("mpi/reduce");
   std::vector<std::string> all = cluster::gather_to_root(mine.dump());
@@ -171,12 +172,18 @@ int render_command(const Options& o) {
     device_scene = std::make_unique<DeviceScene>(*ctx, scene);
     integrator = entry_ptr->make(RenderInputs{*ctx, scene, *embree, *device_scene}, params);
   });
+  // The ranks' films are summed: they must all render the same job (a scene that differs
+  // between machines, say).
+  cluster::check_same("render", settings_json(o, settings, *entry_ptr, scene_holder->camera).dump());
   RenderResult result = integrator->render(settings);
   if (render_interrupted()) log::warn("interrupted: writing the ", result.samples, " spp rendered so far");
 
   double seconds = result.seconds;
   stats.set("render/seconds", seconds);
   stats.set("render/samples_per_second", seconds > 0 ? result.samples / seconds : 0.0);
+  // The passes alone (render/seconds of a gradient render includes its reconstruction): the
+  // throughput that more ranks raise.
+  stats.set("render/loop_seconds", last_loop_times().seconds);
   if (cluster::distributed()) add_rank_stats(stats, device, result);
   if (!cluster::root()) return 0;
   // The images and the stats are written as one set: temporaries first, then renamed together.

@@ -174,6 +174,19 @@ void all_or_none(const std::function<void()>& setup) {
   throw JobFailed();
 }
 
+void check_same(const std::string& what, const std::string& value) {
+  if (g_size <= 1) return;
+  std::vector<std::string> values = gather_to_root(value);
+  bool differ = false;
+  for (int r = 1; r < int(values.size()); ++r) {
+    if (values[r] == values[0]) continue;
+    differ = true;
+    std::fprintf(stderr, "gdrender: rank %d of %d: error: its %s (%s) differs from rank 0's (%s)\n", r, g_size,
+                 what.c_str(), values[r].c_str(), values[0].c_str());
+  }
+  if (any(differ)) throw JobFailed();
+}
+
 bool stopped_early(bool stopped, const std::string& why) {
   if (g_size <= 1) return stopped;
   // "S" marks a rank that stopped, then its host and reason.

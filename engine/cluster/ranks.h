@@ -49,6 +49,10 @@ void all_or_none(const std::function<void()>& setup);
 // rank that stopped with a non-empty `why`, its rank, host and `why`. Alone: `stopped`.
 bool stopped_early(bool stopped, const std::string& why);
 
+// Checks that every rank has the same `value` (what it is about to do): where one differs, rank 0
+// prints that rank's and its own `what` and every rank throws JobFailed. Alone: nothing.
+void check_same(const std::string& what, const std::string& value);
+
 // Thrown on every rank when all_or_none found a failure; rank 0 has printed the reasons.
 class JobFailed : public std::exception {
  public:

@@ -13,20 +13,24 @@
 namespace gdr::cluster {
 namespace {
 
-// One value's moment set on the wire: passes, sum, m2.
-constexpr int kMomentFloats = 3;
+// One pixel's moment sets on the wire: its passes (shared by the three channels), sum.rgb, m2.rgb.
+constexpr int kMomentFloats = 7;
 
 #ifdef GDR_HAVE_MPI
-// MPI_User_function over MPI_FLOAT triples (the datatype is a contiguous triple).
+// MPI_User_function over pixels (the datatype is kMomentFloats contiguous floats).
 void combine_op(void* in, void* inout, int* count, MPI_Datatype*) {
   const float* a = static_cast<const float*>(in);
   float* b = static_cast<float*>(inout);
   for (int i = 0; i < *count; ++i, a += kMomentFloats, b += kMomentFloats) {
-    double n = b[0], s = b[1], m2 = b[2];
-    combine_into(n, s, m2, a[0], a[1], a[2]);
+    double n = 0;
+    for (int c = 0; c < 3; ++c) {
+      double nc = b[0], s = b[1 + c], m2 = b[4 + c];
+      combine_into(nc, s, m2, a[0], a[1 + c], a[4 + c]);
+      b[1 + c] = float(s);
+      b[4 + c] = float(m2);
+      n = nc;
+    }
     b[0] = float(n);
-    b[1] = float(s);
-    b[2] = float(m2);
   }
 }
 
@@ -75,40 +79,42 @@ void sum_to_root(std::vector<float>& values, Stats* stats) {
 
 void combine_to_root(Moments& m, Stats* stats) {
   if (!distributed()) return;
-  if (m.sum.size() != m.m2.size()) throw Error("combine_to_root: sum and m2 differ in size");
+  if (m.sum.size() != m.m2.size() || m.sum.size() % 3 != 0) {
+    throw Error("combine_to_root: sum and m2 must be RGB layers of the same size");
+  }
 #ifdef GDR_HAVE_MPI
   ScopedTimer t(nullptr, "");
-  // Each value travels with its pass count, so that the operation needs nothing but its operands.
-  std::vector<float> packed(m.sum.size() * kMomentFloats);
-  for (size_t i = 0; i < m.sum.size(); ++i) {
-    packed[kMomentFloats * i + 0] = float(m.passes);
-    packed[kMomentFloats * i + 1] = m.sum[i];
-    packed[kMomentFloats * i + 2] = m.m2[i];
+  // Each pixel travels with its pass count, so that the operation needs nothing but its operands
+  // (MPI may hand it any piece of the buffer).
+  const size_t pixels = m.sum.size() / 3;
+  std::vector<float> packed(pixels * kMomentFloats);
+  for (size_t p = 0; p < pixels; ++p) {
+    float* e = &packed[kMomentFloats * p];
+    e[0] = float(m.passes);
+    for (int c = 0; c < 3; ++c) e[1 + c] = m.sum[3 * p + c], e[4 + c] = m.m2[3 * p + c];
   }
-  MPI_Datatype triple;
-  MPI_Type_contiguous(kMomentFloats, MPI_FLOAT, &triple);
-  MPI_Type_commit(&triple);
+  MPI_Datatype pixel;
+  MPI_Type_contiguous(kMomentFloats, MPI_FLOAT, &pixel);
+  MPI_Type_commit(&pixel);
   MPI_Op op;
   MPI_Op_create(&combine_op, 1, &op);  // commutative: the update is symmetric in its operands
-  for (size_t first = 0; first < m.sum.size(); first += kMaxPiece) {
-    const int n = int(std::min(kMaxPiece, m.sum.size() - first));
+  for (size_t first = 0; first < pixels; first += kMaxPiece) {
+    const int n = int(std::min(kMaxPiece, pixels - first));
     float* data = packed.data() + first * kMomentFloats;
     if (root()) {
-      MPI_Reduce(MPI_IN_PLACE, data, n, triple, op, 0, MPI_COMM_WORLD);
+      MPI_Reduce(MPI_IN_PLACE, data, n, pixel, op, 0, MPI_COMM_WORLD);
     } else {
-      MPI_Reduce(data, nullptr, n, triple, op, 0, MPI_COMM_WORLD);
+      MPI_Reduce(data, nullptr, n, pixel, op, 0, MPI_COMM_WORLD);
     }
   }
   MPI_Op_free(&op);
-  MPI_Type_free(&triple);
+  MPI_Type_free(&pixel);
   if (root()) {
-    int passes = 0;
-    for (size_t i = 0; i < m.sum.size(); ++i) {
-      passes = int(packed[kMomentFloats * i]);  // 0 for a value no rank had a pass of
-      m.sum[i] = packed[kMomentFloats * i + 1];
-      m.m2[i] = packed[kMomentFloats * i + 2];
+    for (size_t p = 0; p < pixels; ++p) {
+      const float* e = &packed[kMomentFloats * p];
+      for (int c = 0; c < 3; ++c) m.sum[3 * p + c] = e[1 + c], m.m2[3 * p + c] = e[4 + c];
     }
-    if (!m.sum.empty()) m.passes = passes;
+    if (pixels > 0) m.passes = int(packed[0]);  // every pixel has the same passes
   }
   record(stats, t.elapsed(), packed.size() * sizeof(float));
 #else

@@ -13,7 +13,7 @@ namespace gdr::cluster {
 void sum_to_root(std::vector<float>& values, Stats* stats);
 
 // Per value i: `passes` samples with the sum sum[i] and the summed squared deviations from their
-// mean m2[i] (render/film.h: pass_estimate).
+// mean m2[i] (render/film.h: pass_estimate); interleaved RGB, three values a pixel.
 struct Moments {
   int passes = 0;
   std::vector<float> sum, m2;

@@ -67,6 +67,7 @@ int run_progressive(const RenderSettings& settings, const std::function<void(int
   const auto t = std::chrono::steady_clock::now();
   cluster::barrier();
   g_last.wait_seconds = since(t);
+  g_last.seconds = since(start);
   return done;
 }
 

@@ -22,10 +22,11 @@ int run_progressive(const RenderSettings& settings, const std::function<void(int
 bool render_interrupted();
 
 // What this process's last run_progressive did: its own passes, the seconds it spent in them,
-// and the seconds it waited for the other ranks at the end.
+// the seconds it waited for the other ranks at the end, and the loop's whole time (agreements
+// between rounds included).
 struct LoopTimes {
   int passes = 0;
-  double pass_seconds = 0, wait_seconds = 0;
+  double pass_seconds = 0, wait_seconds = 0, seconds = 0;
 };
 LoopTimes last_loop_times();
 
