@@ -34,6 +34,14 @@ void combine_op(void* in, void* inout, int* count, MPI_Datatype*) {
   }
 }
 
+// Waits for every rank to reach the reduction (timed apart as mpi/reduce_wait), so that
+// mpi/reduce times the transfer and the combination alone, not a slower rank's reading of its
+// film.
+void wait_for_all(Stats* stats) {
+  ScopedTimer t(stats, "mpi/reduce_wait");
+  barrier();
+}
+
 void record(Stats* stats, double seconds, size_t bytes) {
   if (!stats) return;
   stats->add_time("mpi/reduce", seconds);
@@ -61,6 +69,7 @@ void combine_into(double& n, double& s, double& m2, double nb, double sb, double
 void sum_to_root(std::vector<float>& values, Stats* stats) {
   if (!distributed()) return;
 #ifdef GDR_HAVE_MPI
+  wait_for_all(stats);
   ScopedTimer t(nullptr, "");
   for (size_t first = 0; first < values.size(); first += kMaxPiece) {
     const int n = int(std::min(kMaxPiece, values.size() - first));
@@ -83,7 +92,6 @@ void combine_to_root(Moments& m, Stats* stats) {
     throw Error("combine_to_root: sum and m2 must be RGB layers of the same size");
   }
 #ifdef GDR_HAVE_MPI
-  ScopedTimer t(nullptr, "");
   // Each pixel travels with its pass count, so that the operation needs nothing but its operands
   // (MPI may hand it any piece of the buffer).
   const size_t pixels = m.sum.size() / 3;
@@ -98,6 +106,8 @@ void combine_to_root(Moments& m, Stats* stats) {
   MPI_Type_commit(&pixel);
   MPI_Op op;
   MPI_Op_create(&combine_op, 1, &op);  // commutative: the update is symmetric in its operands
+  wait_for_all(stats);
+  ScopedTimer t(nullptr, "");
   for (size_t first = 0; first < pixels; first += kMaxPiece) {
     const int n = int(std::min(kMaxPiece, pixels - first));
     float* data = packed.data() + first * kMomentFloats;
