@@ -20,7 +20,7 @@ namespace gdr::cluster {
 namespace {
 
 int g_rank = 0, g_size = 1, g_local_rank = 0, g_local_size = 1;
-bool g_mpi = false;  // MPI was initialized (and must be finalized)
+[[maybe_unused]] bool g_mpi = false;  // MPI was initialized (and must be finalized)
 
 std::string message_of(const std::exception_ptr& e) {
   try {
