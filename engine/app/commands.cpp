@@ -7,6 +7,7 @@
 #include "app/output_paths.h"
 #include "app/reconstruct_command.h"
 #include "app/render_command.h"
+#include "cluster/ranks.h"
 #include "device/context.h"
 #include "device/devices.h"
 #include "device/runtime_env.h"
@@ -80,6 +81,11 @@ int compare_command(const Options& o) {
 }  // namespace
 
 int run_command(const Options& options) {
+  if (cluster::distributed() && options.scene.empty()) {
+    // N ranks would each do the same and write the same files.
+    throw Error("only a render runs across MPI ranks: run --list-devices, --list-integrators, --info, --compare and "
+                "--reconstruct without mpirun");
+  }
   if (options.list_devices) return list_devices_command();
   if (options.list_integrators) return list_integrators_command();
   if (!options.info_scene.empty()) return info_command(options);

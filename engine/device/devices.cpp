@@ -97,7 +97,7 @@ std::string format_device_list(const std::vector<DeviceInfo>& devices) {
   return s.str();
 }
 
-DeviceInfo select_device(const std::string& selector_in) {
+DeviceInfo select_device(const std::string& selector_in, int nth) {
   std::string selector = selector_in;
   if (selector.empty()) {
     if (const char* env = std::getenv("GDR_DEVICE")) selector = env;
@@ -111,9 +111,11 @@ DeviceInfo select_device(const std::string& selector_in) {
 
   if (selector.empty()) {
     for (const char* kind : {"gpu", "cpu"}) {
+      std::vector<const DeviceInfo*> of_kind;
       for (const DeviceInfo& d : devices) {
-        if (d.type == kind) return d;
+        if (d.type == kind) of_kind.push_back(&d);
       }
+      if (!of_kind.empty()) return *of_kind[size_t(std::max(nth, 0)) % of_kind.size()];
     }
     return devices.front();
   }

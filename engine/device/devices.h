@@ -29,7 +29,9 @@ std::string format_device_list(const std::vector<DeviceInfo>& devices);
 
 // Selector: empty (then env GDR_DEVICE, then the first GPU, then the first CPU), an index,
 // "cpu"/"gpu", or a case-insensitive substring of the device or platform name.
-// Throws DeviceError listing the devices that exist when nothing matches.
-DeviceInfo select_device(const std::string& selector);
+// Throws DeviceError listing the devices that exist when nothing matches. `nth`: without a
+// selector, the nth process on a node takes the nth GPU (cycling), else the nth CPU device, so
+// that processes sharing a node spread over its devices.
+DeviceInfo select_device(const std::string& selector, int nth = 0);
 
 }  // namespace gdr

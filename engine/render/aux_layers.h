@@ -21,11 +21,13 @@ class AuxLayers {
   // The first hits of camera rays [0, count) of a chunk; ray i belongs to pixel first_pixel + i.
   void add(const GdrPtParams& params, const Buffer<GdrRayHit>& first_hits, cl_uint count,
            const DeviceScene& scene);
-  // Appends the albedo, normal and depth layers (means over `samples`).
+  // Appends the albedo, normal and depth layers (means over `samples` of all ranks; render/film.h:
+  // a collective under MPI).
   void add_to(Image& image, int samples) const;
 
  private:
   Kernel kernel_;
+  Stats* stats_;
   Buffer<Vec4> albedo_, normal_;
   Buffer<float> depth_;
 };

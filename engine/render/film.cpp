@@ -2,12 +2,14 @@
 
 #include <algorithm>
 
+#include "cluster/ranks.h"
+#include "cluster/reduce.h"
 #include "util/error.h"
 
 namespace gdr {
 
 Film::Film(Context& ctx, int width, int height, const std::vector<std::string>& layers)
-    : width_(width), height_(height) {
+    : width_(width), height_(height), stats_(ctx.stats()) {
   for (const std::string& name : layers) layers_.emplace(name, Buffer<Vec4>(ctx, pixels()));
 }
 
@@ -26,7 +28,16 @@ void Film::clear() {
 }
 
 std::vector<float> Film::mean_rgb(const std::string& layer, int samples) const {
-  return film_rgb((*this)[layer], mean_scale(samples));
+  return reduced_rgb((*this)[layer], mean_scale(samples), stats_);
+}
+
+std::vector<float> reduced_rgb(const Buffer<Vec4>& sums, float scale, Stats* stats) {
+  std::vector<float> rgb = film_rgb(sums, 1.0f);
+  cluster::sum_to_root(rgb, stats);
+  if (scale != 1.0f) {
+    for (float& v : rgb) v *= scale;
+  }
+  return rgb;
 }
 
 std::vector<float> film_rgb(const Buffer<Vec4>& sums, float scale) {
@@ -40,16 +51,24 @@ std::vector<float> film_rgb(const Buffer<Vec4>& sums, float scale) {
   return rgb;
 }
 
-PassEstimate pass_estimate(const Buffer<Vec4>& sum, const Buffer<Vec4>& m2, int passes) {
+PassEstimate pass_estimate(const Buffer<Vec4>& sum, const Buffer<Vec4>& m2, int held, int passes, Stats* stats) {
+  cluster::Moments moments{held, film_rgb(sum, 1.0f), film_rgb(m2, 1.0f)};
+  cluster::combine_to_root(moments, stats);
+  if (cluster::root() && moments.passes != passes) {
+    throw Error("film reduction: the ranks hold " + std::to_string(moments.passes) + " passes, not " +
+                std::to_string(passes));
+  }
+  passes = moments.passes;  // the rank's own on the others
   PassEstimate e;
   e.passes = passes;
-  e.mean = film_rgb(sum, mean_scale(passes));
+  e.mean = moments.sum;
+  const float scale = mean_scale(passes);
+  for (float& v : e.mean) v *= scale;
   e.variance.assign(e.mean.size(), 0.0f);
   if (passes < 2) return e;
-  std::vector<float> deviations = film_rgb(m2, 1.0f);
-  const double scale = 1.0 / (double(passes - 1) * passes);
-  for (size_t i = 0; i < deviations.size(); ++i) {
-    e.variance[i] = float(std::max(0.0, double(deviations[i])) * scale);
+  const double v_scale = 1.0 / (double(passes - 1) * passes);
+  for (size_t i = 0; i < moments.m2.size(); ++i) {
+    e.variance[i] = float(std::max(0.0, double(moments.m2[i])) * v_scale);
   }
   return e;
 }

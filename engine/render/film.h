@@ -1,7 +1,9 @@
 // A render's per-pixel sums on the device, as named layers (float4 per pixel, w unused):
 // cleared at the start of a render, summed by the kernels pass after pass, and turned into
 // interleaved-RGB means at the end. The film knows its layers, so code that sums or saves them
-// (all layers of any integrator) needs no integrator of its own.
+// (all layers of any integrator) needs no integrator of its own. Under MPI the reads below are
+// also the reductions (cluster/reduce.h): every rank calls them in the same order, and rank 0
+// gets the sums of all ranks' passes; the others get their own.
 #pragma once
 #include <map>
 #include <string>
@@ -25,11 +27,14 @@ class Film {
   const Buffer<Vec4>& operator[](const std::string& layer) const;
 
   void clear();
-  // The layer's mean over `samples` passes, interleaved RGB.
+  // The layer's mean over `samples` passes (of all ranks), interleaved RGB.
   std::vector<float> mean_rgb(const std::string& layer, int samples) const;
+
+  Stats* stats() const { return stats_; }
 
  private:
   int width_, height_;
+  Stats* stats_;
   std::map<std::string, Buffer<Vec4>> layers_;
 };
 
@@ -38,6 +43,8 @@ inline float mean_scale(int samples) { return samples > 0 ? 1.0f / samples : 0.0
 
 // The buffer's RGB times `scale`, interleaved.
 std::vector<float> film_rgb(const Buffer<Vec4>& sums, float scale);
+// The same of the buffer's sums over all ranks (on rank 0; the rank's own elsewhere).
+std::vector<float> reduced_rgb(const Buffer<Vec4>& sums, float scale, Stats* stats);
 
 // The mean of a set of passes and its per-pixel variance (interleaved RGB). The variance is
 // estimated over passes, not over the paths inside one: each pass adds one sample per pixel and
@@ -51,8 +58,9 @@ struct PassEstimate {
 };
 
 // From a layer of sums and one of summed squared deviations (kernels/path/film.h:
-// film_add_moments) over `passes` passes.
-PassEstimate pass_estimate(const Buffer<Vec4>& sum, const Buffer<Vec4>& m2, int passes);
+// film_add_moments) over this rank's `held` passes, joined with the other ranks' into the
+// estimate of all `passes` (on rank 0; the rank's own elsewhere).
+PassEstimate pass_estimate(const Buffer<Vec4>& sum, const Buffer<Vec4>& m2, int held, int passes, Stats* stats);
 
 // Two disjoint sets of passes of the same pixels as one (the pairwise update of Chan, Golub and
 // LeVeque, in double).

@@ -1,5 +1,7 @@
 #include "render/gradient_film.h"
 
+#include "render/pass_schedule.h"
+
 namespace gdr {
 namespace {
 
@@ -8,7 +10,7 @@ std::string layer(const char* name, int h) { return std::string(h == 0 ? "even."
 
 const char* const kLayers[] = {"primal", "dx", "dy", "direct", "primal_m2", "dx_m2", "dy_m2"};
 
-// Passes of half h among the first `passes`.
+// Passes of half h among the first `passes` of all ranks.
 int half_passes(int passes, int h) { return h == 0 ? (passes + 1) / 2 : passes / 2; }
 
 std::vector<std::string> layer_names() {
@@ -26,7 +28,8 @@ GradientFilm::GradientFilm(Context& context, int width, int height) : film_(cont
 cl_uint GradientFilm::PassArgs::bind_to(Kernel& k, cl_uint first) const {
   const int h = sample % 2;
   cl_uint i = first;
-  k.set_arg(i++, cl_int(half_passes(sample + 1, h)));
+  // The sums are this rank's: the count is that of its own passes of the half, this one included.
+  k.set_arg(i++, cl_int(PassSchedule::of_this_process().held(sample + 1, h)));
   for (const char* l : kLayers) k.set_arg(i++, film->film_[layer(l, h)]);
   return i - first;
 }
@@ -36,6 +39,7 @@ GradientImages GradientFilm::images(int passes) const {
   out.width = width();
   out.height = height();
   out.samples = passes;
+  const PassSchedule schedule = PassSchedule::of_this_process();
   PassEstimate whole[3];
   std::vector<float> direct(pixels() * 3, 0.0f);
   for (int h = 0; h < 2; ++h) {
@@ -44,7 +48,8 @@ GradientImages GradientFilm::images(int passes) const {
     GradientLayers& half = out.halves[h];
     PassEstimate e[3];
     for (int q = 0; q < 3; ++q) {
-      e[q] = pass_estimate(film_[layer(kLayers[q], h)], film_[layer(kLayers[4 + q], h)], n);
+      e[q] = pass_estimate(film_[layer(kLayers[q], h)], film_[layer(kLayers[4 + q], h)], schedule.held(passes, h), n,
+                           film_.stats());
       whole[q] = combine(whole[q], e[q]);
     }
     half.primal = e[0].mean;
@@ -53,7 +58,7 @@ GradientImages GradientFilm::images(int passes) const {
     half.primal_variance = e[0].variance;
     half.dx_variance = e[1].variance;
     half.dy_variance = e[2].variance;
-    half.direct = film_rgb(film_[layer("direct", h)], mean_scale(n));
+    half.direct = reduced_rgb(film_[layer("direct", h)], mean_scale(n), film_.stats());
     for (size_t i = 0; i < direct.size(); ++i) direct[i] += half.direct[i] * (float(n) / float(passes));
   }
   for (PassEstimate& e : whole) {  // no passes at all: zero images

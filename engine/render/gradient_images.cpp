@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "cluster/ranks.h"
 #include "recon/reconstruct.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -23,7 +24,11 @@ RenderResult gradient_result(Context& ctx, const GradientImages& layers, const I
                              Stats* stats) {
   ScopedTimer t(nullptr, "");  // gradient_image records recon/total
   RenderResult result;
-  result.image = gradient_image(ctx, layers, recon_from_params(params), stats);
+  // L1 is not linear: the solve runs once, on rank 0's sums of all ranks, never per rank. The
+  // other ranks' layers are their own share, which nobody writes.
+  std::optional<ReconSettings> recon = recon_from_params(params);
+  if (!cluster::root()) recon.reset();
+  result.image = gradient_image(ctx, layers, recon, stats);
   result.samples = layers.samples;
   result.seconds = layers.seconds + t.elapsed();
   return result;

@@ -8,6 +8,9 @@ namespace gdr::log {
 enum class Level { Quiet = 0, Info = 1, Verbose = 2 };
 void set_level(Level level);
 Level level();
+// Nothing is written while muted (the ranks of an MPI job other than rank 0, whose lines would
+// repeat rank 0's; their errors are printed apart, naming the rank).
+void set_muted(bool muted);
 
 void write(const char* prefix, const std::string& message);
 
