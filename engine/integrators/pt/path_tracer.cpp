@@ -1,6 +1,6 @@
 #include "integrators/pt/path_tracer.h"
 
-#include "render/progressive_loop.h"
+#include "render/radiance_render.h"
 #include "render/wavefront/chunks.h"
 
 namespace gdr {
@@ -90,26 +90,9 @@ void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, ui
 }
 
 RenderResult PathTracer::render(const RenderSettings& settings) {
-  Stats* stats = in_.context.stats();
-  ScopedTimer timer(stats, "render/trace");
-  const uint32_t pixels = uint32_t(film_.pixels());
-  film_.clear();
-  if (aux_) aux_->clear();
-  RenderResult result;
-  result.samples = run_progressive(settings, [&](int sample) {
-    for_each_chunk(pixels, capacity_, [&](uint32_t first, uint32_t count) {
-      trace_chunk(settings, uint32_t(sample), first, count);
-    });
+  return render_radiance(in_.context, settings, film_, aux_, capacity_, [&](uint32_t sample, uint32_t first, uint32_t count) {
+    trace_chunk(settings, sample, first, count);
   });
-  result.seconds = timer.elapsed();
-  result.image = Image(film_.width(), film_.height(), {});
-  result.image.add_rgb_layer("", film_.mean_rgb("radiance", result.samples));
-  if (aux_) aux_->add_to(result.image, result.samples);
-  if (stats) {
-    stats->add_count("samples/paths", uint64_t(pixels) * result.samples);
-    stats->set("render/spp", result.samples);
-  }
-  return result;
 }
 
 }  // namespace gdr
