@@ -28,10 +28,7 @@ __kernel void lt_camera(__global const GdrCamera* camera, GdrPtParams params, __
   uint i = get_global_id(0);
   if (i >= params.pixel_count) return;
   GdrCamera cam = *camera;
-  uint pixel = params.first_pixel + i;
-  PathSampler ps = path_sampler(params.seed, pixel, params.sample);
-  int px = (int)(pixel % (uint)cam.width), py = (int)(pixel / (uint)cam.width);
-  CameraRay r = camera_sample(&cam, px, py, camera_jitter(&cam, &ps, px, py));
+  CameraRay r = pixel_camera_ray(&cam, params.seed, params.first_pixel + i, params.sample);
   write_camera_ray(&rays[i], &r, i);
 }
 

@@ -39,6 +39,14 @@ inline CameraRay camera_sample(const GdrCamera* cam, int x, int y, float2 jitter
   return r;
 }
 
+// The camera ray of sample `sample` of `pixel` (row-major): its filter offset from the camera's
+// random numbers, then the ray through it.
+inline CameraRay pixel_camera_ray(const GdrCamera* cam, uint seed, uint pixel, uint sample) {
+  PathSampler ps = path_sampler(seed, pixel, sample);
+  int px = (int)(pixel % (uint)cam->width), py = (int)(pixel / (uint)cam->width);
+  return camera_sample(cam, px, py, camera_jitter(cam, &ps, px, py));
+}
+
 inline void write_camera_ray(__global GdrRayHit* r, const CameraRay* c, uint id) {
   write_ray_hit(r, c->o, c->d, c->tnear, c->tfar, id);
 }

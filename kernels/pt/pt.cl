@@ -19,10 +19,7 @@ __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, 
   if (i >= params.pixel_count) return;
   GdrCamera cam = *camera;
   uint pixel = params.first_pixel + i;
-  PathSampler ps = path_sampler(params.seed, pixel, params.sample);
-  int px = (int)(pixel % (uint)cam.width), py = (int)(pixel / (uint)cam.width);
-  float2 jitter = camera_jitter(&cam, &ps, px, py);
-  CameraRay r = camera_sample(&cam, px, py, jitter);
+  CameraRay r = pixel_camera_ray(&cam, params.seed, pixel, params.sample);
   write_camera_ray(&rays[i], &r, i);
   queue[i] = i;
   paths[i] = path_start(pixel, params.sample);
