@@ -14,6 +14,16 @@
 namespace gdr {
 namespace {
 
+// The longest face list accepted (a polygon of more vertices than this is not a mesh face).
+constexpr size_t kMaxPlyListLength = 1u << 20;
+
+// A value read from the file as the message shows it (%g: whole numbers without decimals).
+std::string number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 enum class Type { I8, U8, I16, U16, I32, U32, F32, F64 };
 
 struct Property {
@@ -109,6 +119,19 @@ class BodyReader {
   int line_;
   std::istringstream tokens_;
 };
+
+// The length of item `item`'s list in element `element`, read as a double (a list's count may be
+// declared float) and converted only once it is a whole number in range: a cast of anything else
+// is undefined.
+size_t list_length(BodyReader& body, Type count_type, const std::string& path, const std::string& element,
+                   size_t item) {
+  double c = body.read(count_type);
+  if (!(c >= 0 && c <= double(kMaxPlyListLength) && c == std::floor(c))) {
+    throw InputError(path, body.line(), element + " " + std::to_string(item) + ": list length " + number(c) +
+                                            " is not a whole number from 0 to " + std::to_string(kMaxPlyListLength));
+  }
+  return static_cast<size_t>(c);
+}
 
 int uv_slot(const std::string& n) {
   if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") return 0;
@@ -220,7 +243,7 @@ MeshData read_ply(const std::string& path) {
         for (size_t i = 0; i < e.props.size(); ++i) {
           const Property& p = e.props[i];
           if (p.list) {
-            size_t n = static_cast<size_t>(body.read(p.count_type));
+            size_t n = list_length(body, p.count_type, path, e.name, v);
             for (size_t k = 0; k < n; ++k) body.read(p.type);
           } else {
             double x = body.read(p.type);
@@ -249,18 +272,17 @@ MeshData read_ply(const std::string& path) {
         body.begin_item();
         for (size_t i = 0; i < e.props.size(); ++i) {
           const Property& p = e.props[i];
-          size_t n = p.list ? static_cast<size_t>(body.read(p.count_type)) : 1;
+          size_t n = p.list ? list_length(body, p.count_type, path, e.name, f) : 1;
           if (static_cast<int>(i) == list_prop) poly.clear();
           for (size_t k = 0; k < n; ++k) {
             double x = body.read(p.type);
-            if (static_cast<int>(i) == list_prop) poly.push_back(static_cast<long long>(x));
-          }
-        }
-        for (long long idx : poly) {
-          if (idx < 0 || static_cast<size_t>(idx) >= vertex_count) {
-            throw InputError(path, body.line(), "face " + std::to_string(f) + " refers to vertex " +
-                                                    std::to_string(idx) + " but the file has " +
-                                                    std::to_string(vertex_count) + " vertices");
+            if (static_cast<int>(i) != list_prop) continue;
+            if (!(x >= 0 && x < double(vertex_count) && x == std::floor(x))) {
+              throw InputError(path, body.line(), "face " + std::to_string(f) + " refers to vertex " + number(x) +
+                                                      " but the file has " + std::to_string(vertex_count) +
+                                                      " vertices");
+            }
+            poly.push_back(static_cast<long long>(x));
           }
         }
         for (size_t k = 1; k + 1 < poly.size(); ++k) {
@@ -273,7 +295,7 @@ MeshData read_ply(const std::string& path) {
       for (size_t item = 0; item < e.count; ++item) {
         body.begin_item();
         for (const Property& p : e.props) {
-          size_t n = p.list ? static_cast<size_t>(body.read(p.count_type)) : 1;
+          size_t n = p.list ? list_length(body, p.count_type, path, e.name, item) : 1;
           for (size_t k = 0; k < n; ++k) body.read(p.type);
         }
       }

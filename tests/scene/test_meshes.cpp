@@ -135,6 +135,26 @@ TEST(MeshPly, OutOfRangeIndexAndNanVertex) {
   EXPECT_EQ(n.line(), 11) << n.what();
 }
 
+// List lengths and indices are read as numbers of the declared type (float is legal) and checked
+// before they become integers: a huge, negative or fractional one is named, not cast.
+TEST(MeshPly, ListLengthsAndIndicesMustBeWholeNumbersInRange) {
+  test::TempFolder folder;
+  auto ply = [&](const std::string& face) {
+    return folder.write("f.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement face 1\nproperty list float float vertex_indices\n"
+                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n" + face + "\n");
+  };
+  for (const char* face : {"4e27 0 1 2", "-1 0 1 2", "2.5 0 1 2"}) {
+    InputError e = expect_input_error([&] { read_ply(ply(face)); });
+    EXPECT_NE(std::string(e.what()).find("list length"), std::string::npos) << face << ": " << e.what();
+  }
+  for (const char* face : {"3 0 1 4e27", "3 0 1 1.5", "3 0 -1 2"}) {
+    InputError e = expect_input_error([&] { read_ply(ply(face)); });
+    EXPECT_NE(std::string(e.what()).find("refers to vertex"), std::string::npos) << face << ": " << e.what();
+  }
+  EXPECT_EQ(read_ply(ply("3 0 1 2")).triangle_count(), 1u);
+}
+
 // Mitsuba .serialized (version 4) holding `meshes`, each a list of positions and triangles.
 std::string serialized(const std::vector<std::pair<std::vector<float>, std::vector<uint32_t>>>& meshes) {
   std::string file;
