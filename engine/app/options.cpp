@@ -62,6 +62,21 @@ CLI::Validator resolution_check() {
       "WxH");
 }
 
+// pt's strategy names, or bdpt's "s,t" (the integrator checks which strategies exist).
+CLI::Validator strategy_check() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        if (s == "mis" || s == "bsdf" || s == "light") return {};
+        size_t comma = s.find(',');
+        auto digits = [](const std::string& d) {
+          return !d.empty() && d.size() < 4 && d.find_first_not_of("0123456789") == std::string::npos;
+        };
+        if (comma != std::string::npos && digits(s.substr(0, comma)) && digits(s.substr(comma + 1))) return {};
+        return "Value " + s + " is not mis, bsdf, light or s,t";
+      },
+      "STRATEGY");
+}
+
 // An integrator parameter on the command line: kept under its registry name when given.
 struct ParamOption {
   CLI::Option* option;
@@ -122,8 +137,11 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     return params.back().option;
   };
   param("--strategy", "strategy",
-        "mis (BSDF and light sampling) | bsdf (BSDF only) | light (light sampling only)")
-      ->check(CLI::IsMember({"mis", "bsdf", "light"}));
+        "pt: mis (BSDF and light sampling) | bsdf (BSDF only) | light (light sampling only); bdpt: s,t (the "
+        "strategy with s light and t camera vertices alone, unweighted)")
+      ->check(strategy_check());
+  param("--mis", "mis", "heuristic weighting the strategies: power (default) | balance")
+      ->check(CLI::IsMember({"power", "balance"}));
   params.push_back({nullptr, "aux", "true"});
   params.back().option = app.add_flag("--aux")
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "integrators/bidir/light_tracer.h"
+#include "integrators/bidir/bidirectional.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "integrators/pt/path_tracer.h"
 #include "util/error.h"
@@ -31,7 +31,12 @@ std::vector<IntegratorEntry> make_registry() {
       {"lt", "light tracer: light subpaths connected to the camera and splatted, emission seen directly by camera rays",
        false, kLtParams, {"ptracer", "lt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
-         return std::make_unique<LightTracer>(in, lt_settings(p));
+         return std::make_unique<Bidirectional>(in, lt_settings(p));
+       }},
+      {"bdpt", "bidirectional path tracer: every connection of a camera and a light subpath, weighted by MIS",
+       false, kBdptParams, {"bdpt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<Bidirectional>(in, bdpt_settings(p));
        }},
   };
 }

@@ -86,6 +86,13 @@ inline float camera_we(const GdrCamera* cam, float cos_theta) {
   return 1.0f / (camera_image_area(cam) * c2 * c2);
 }
 
+// Cosine between a unit direction leaving the camera and its view axis.
+inline float camera_cos_theta(const GdrCamera* cam, float3 dir) {
+  float3 l = camera_to_local_vector(cam, dir);
+  float len = length(l);
+  return len > 0.0f ? l.z / len : 0.0f;
+}
+
 // Solid-angle pdf of the camera's direction for a ray drawn uniformly over the image (the
 // position pdf is a delta: the pinhole).
 inline float camera_pdf_dir(const GdrCamera* cam, float cos_theta) {

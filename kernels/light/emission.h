@@ -164,3 +164,25 @@ inline float light_emission_pdf_pos(const SceneData* s, int index, float area) {
     default: return infinite_disc_pdf(l);
   }
 }
+
+// Lights at infinity: a light subpath's first segment from them has no length.
+inline int light_is_infinite(const SceneData* s, int index) {
+  int type = s->lights[index].type;
+  return type == LIGHT_DIRECTIONAL || type == LIGHT_CONSTANT || type == LIGHT_ENVMAP;
+}
+
+// Bidirectional MIS compares a light point's two ways of being drawn: by next-event estimation
+// (the "direct" pdf: selection times position for lights at a finite distance, selection times
+// direction for lights at infinity) and by emission sampling (selection, position and direction).
+// Their ratio is the emission's other factor: the direction's pdf toward `dir` for finite lights
+// (n: the area light's normal there), the disc's for lights at infinity.
+inline float light_emission_over_direct(const SceneData* s, int index, float3 n, float3 dir) {
+  if (light_is_infinite(s, index)) return infinite_disc_pdf(&s->lights[index]);
+  return light_emission_pdf_dir(s, index, n, dir);
+}
+
+// The direct pdf (as above) of the light point an emission sample started from.
+inline float emission_direct_pdf(const SceneData* s, const EmissionSample* e) {
+  if (light_is_infinite(s, e->light)) return e->pmf * (e->delta_dir ? 1.0f : e->pdf_dir);
+  return e->pmf * e->pdf_pos;
+}

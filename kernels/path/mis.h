@@ -21,3 +21,7 @@ inline float gpt_weight(float p, float q, float r) {
   if (!(p > 0.0f) || !(pair > 0.0f) || !isfinite(pair)) return 0.0f;
   return p / (p + q) / pair;
 }
+
+// The heuristic's power of a pdf ratio in the bidirectional MIS sums (shared/bidir_types.h:
+// BIDIR_MIS_BALANCE: x, BIDIR_MIS_POWER: x^2).
+inline float mis_power_of(float x, int mis) { return mis == 2 ? x * x : x; }

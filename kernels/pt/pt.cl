@@ -92,11 +92,3 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
   queue_out[k] = slot;
   spawn_ray(&rays_out[k], su.p, su.ng, wi, slot);
 }
-
-// Adds the contributions of the shadow rays Embree found unoccluded.
-__kernel void pt_shadow(uint count, __global const GdrRay* shadow_rays, __global const float4* shadow_values,
-                        __global float4* film) {
-  uint k = get_global_id(0);
-  if (k >= count) return;
-  if (shadow_unoccluded(shadow_rays[k].tfar)) film[shadow_rays[k].id] += shadow_values[k];
-}

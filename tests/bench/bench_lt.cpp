@@ -8,7 +8,7 @@
 #include <string>
 
 #include "accel/embree_scene.h"
-#include "integrators/bidir/light_tracer.h"
+#include "integrators/bidir/bidirectional.h"
 #include "render/device_scene.h"
 #include "render/splat_film.h"
 #include "scene/load_scene.h"
@@ -21,14 +21,14 @@ struct LtBench {
   Scene scene;
   std::unique_ptr<EmbreeScene> embree;
   std::unique_ptr<DeviceScene> device_scene;
-  std::unique_ptr<LightTracer> tracer;
+  std::unique_ptr<Bidirectional> tracer;
   uint32_t pixels;
 
   explicit LtBench(Context& ctx)
       : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
         device_scene(std::make_unique<DeviceScene>(ctx, scene)),
-        tracer(std::make_unique<LightTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, LtSettings{})),
+        tracer(std::make_unique<Bidirectional>(RenderInputs{ctx, scene, *embree, *device_scene}, BidirSettings{})),
         pixels(uint32_t(scene.camera.width) * scene.camera.height) {}
 
   static Scene load(const std::string& path) {

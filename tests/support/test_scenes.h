@@ -207,4 +207,25 @@ inline void scale_scene(Scene& scene, float s) {
   }
 }
 
+// A coarse diffuse sphere (4 x 8 facets) with smooth vertex normals on a floor before a wall,
+// under a small area light, 24 pixels wide: its shading normals differ from its facets' by up to
+// ~40 degrees (what light subpaths need the shading-normal correction for).
+inline Scene coarse_smooth_sphere_scene() {
+  SceneBuilder b;
+  GdrMaterial m{};
+  m.type = BSDF_DIFFUSE;
+  m.reflectance_texture = -1;
+  m.coating_table = -1;
+  m.reflectance[0] = m.reflectance[1] = m.reflectance[2] = 0.7f;
+  int white = b.material(m, "white");
+  MeshData sphere = make_sphere(4, 8);
+  for (size_t v = 0; v < sphere.vertex_count(); ++v) sphere.positions[3 * v + 2] += 3.0f;
+  b.shape(sphere, white, 0.0f, "sphere");
+  b.shape(quad_mesh({-3, -1, 0}, {-3, -1, 6}, {3, -1, 6}, {3, -1, 0}), white, 0.0f, "floor");
+  b.shape(quad_mesh({-3, -1, 6}, {-3, 3, 6}, {3, 3, 6}, {3, -1, 6}), white, 0.0f, "wall");
+  b.shape(quad_mesh({-0.75f, 2.5f, 2.25f}, {0.75f, 2.5f, 2.25f}, {0.75f, 2.5f, 3.75f}, {-0.75f, 2.5f, 3.75f}),
+          white, 5.0f, "light");
+  return b.finish(camera_looking_z(0.0f, 0.3f, 0.5f, 45.0f, 24));
+}
+
 }  // namespace gdr::test

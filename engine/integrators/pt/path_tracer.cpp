@@ -29,7 +29,7 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       kernels_(in.context, in.scene),
       generate_(kernels_.make(kProgram, "pt_generate")),
       shade_(kernels_.make(kProgram, "pt_shade")),
-      shadow_(kernels_.make(kProgram, "pt_shadow")),
+      shadow_(kernels_.make(kProgram, "path_shadow_add")),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       queues_(in.context, capacity_, true),
       paths_(in.context, capacity_),

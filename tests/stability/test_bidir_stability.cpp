@@ -1,8 +1,8 @@
-// The light tracer stays finite where its new paths meet the edge cases: every project scene,
-// and lights that cannot emit (a zero-area triangle) beside a point light (a delta position
-// connected to the camera through one scattering vertex). The renders use a context of their
-// own with stats, so the kernels' counters (rejected non-finite samples, light subpaths,
-// camera connections) are read, not assumed.
+// The bidirectional integrator (lt and bdpt) stays finite where its new paths meet the edge
+// cases: every project scene, and lights that cannot emit (a zero-area triangle) beside a point
+// light (a delta position, connected to the camera through one scattering vertex and, under
+// bdpt, to camera vertices). The renders use a context of their own with stats, so the kernels'
+// counters (rejected non-finite samples, light subpaths, connections) are read, not assumed.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include "accel/embree_scene.h"
 #include "device/devices.h"
-#include "integrators/bidir/light_tracer.h"
+#include "integrators/bidir/bidirectional.h"
 #include "render/device_scene.h"
 #include "scene/load_scene.h"
 #include "stability/stability_checks.h"
@@ -19,17 +19,19 @@
 namespace gdr::test {
 namespace {
 
-struct LtRun {
+struct BidirRun {
   std::vector<float> rgb;
   Stats stats;
 };
 
-// lt on `scene` (4 spp, seed 402) on a context that records stats.
-void render_lt(const Scene& scene, int max_depth, LtRun* out) {
+const BidirSettings kLt = lt_settings(IntegratorParams{}), kBdpt = bdpt_settings(IntegratorParams{});
+
+// `settings` on `scene` (4 spp, seed 402) on a context that records stats.
+void render_bidir(const Scene& scene, int max_depth, const BidirSettings& settings, BidirRun* out) {
   Context ctx(select_device(""), &out->stats);
   EmbreeScene embree(scene, BuildQuality::Low, &out->stats);
   DeviceScene device(ctx, scene);
-  LightTracer lt(RenderInputs{ctx, scene, embree, device}, LtSettings{});
+  Bidirectional lt(RenderInputs{ctx, scene, embree, device}, settings);
   RenderSettings s;
   s.spp = 4;
   s.seed = 402;
@@ -37,7 +39,13 @@ void render_lt(const Scene& scene, int max_depth, LtRun* out) {
   out->rgb = lt.render(s).image.rgb_layer("");
 }
 
-TEST(LightTracerStability, ProjectScenesAreFinite) {
+class BidirStability : public ::testing::TestWithParam<bool> {
+ protected:
+  bool bdpt() const { return GetParam(); }
+  const BidirSettings& settings() const { return bdpt() ? kBdpt : kLt; }
+};
+
+TEST_P(BidirStability, ProjectScenesAreFinite) {
   int scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(GDR_SOURCE_DIR) + "/scenes")) {
     if (entry.path().extension() != ".xml") continue;
@@ -46,12 +54,17 @@ TEST(LightTracerStability, ProjectScenesAreFinite) {
     int w = 24, h = std::max(1, w * scene.camera.height / std::max(1, scene.camera.width));
     scene.camera.width = w;
     scene.camera.height = h;
-    LtRun r;
-    render_lt(scene, scene.max_depth > 0 ? scene.max_depth : 16, &r);
+    BidirRun r;
+    render_bidir(scene, scene.max_depth > 0 ? scene.max_depth : 16, settings(), &r);
     EXPECT_TRUE(all_finite(r.rgb)) << entry.path();
     EXPECT_EQ(r.stats.count("samples/nonfinite_rejected"), 0u) << entry.path();
-    EXPECT_GT(r.stats.count("lt/light_subpaths"), 0u) << entry.path();
-    EXPECT_GT(r.stats.count("lt/camera_connections"), 0u) << entry.path();
+    EXPECT_GT(r.stats.count("bidir/light_subpaths"), 0u) << entry.path();
+    EXPECT_GT(r.stats.count("bidir/camera_connections"), 0u) << entry.path();
+    if (bdpt()) {
+      EXPECT_GT(r.stats.count("bidir/light_vertices"), 0u) << entry.path();
+      EXPECT_GT(r.stats.count("bidir/connections"), 0u) << entry.path();
+      EXPECT_GT(r.stats.count("bidir/light_connections"), 0u) << entry.path();
+    }
     double sum = 0;
     for (float v : r.rgb) sum += v;
     EXPECT_GT(sum, 0.0) << entry.path() << " rendered black";
@@ -61,7 +74,7 @@ TEST(LightTracerStability, ProjectScenesAreFinite) {
 
 // A diffuse wall lit by a point light and by a degenerate (zero-area) emitting triangle: the
 // triangle starts no light subpath, the point light's do, and every pixel is finite.
-TEST(LightTracerStability, ZeroAreaLightAndPointLight) {
+TEST_P(BidirStability, ZeroAreaLightAndPointLight) {
   SceneBuilder b;
   GdrMaterial m{};
   m.type = BSDF_DIFFUSE;
@@ -79,8 +92,8 @@ TEST(LightTracerStability, ZeroAreaLightAndPointLight) {
   point.position[2] = 5.0f;
   b.scene().lights.push_back(point);
   Scene scene = b.finish(camera_looking_z(0, 0, 0, 40.0f, 16));
-  LtRun r;
-  render_lt(scene, -1, &r);
+  BidirRun r;
+  render_bidir(scene, -1, settings(), &r);
   EXPECT_TRUE(all_finite(r.rgb));
   EXPECT_EQ(r.stats.count("samples/nonfinite_rejected"), 0u);
   double sum = 0;
@@ -88,8 +101,11 @@ TEST(LightTracerStability, ZeroAreaLightAndPointLight) {
   EXPECT_GT(sum, 0.0);
   // The selection gives the triangle no power (it has no area), so every subpath of the 4 passes
   // of 16 x 16 comes from the point light, whose emission never fails.
-  EXPECT_EQ(r.stats.count("lt/light_subpaths"), uint64_t(16 * 16 * 4));
+  EXPECT_EQ(r.stats.count("bidir/light_subpaths"), uint64_t(16 * 16 * 4));
 }
+
+INSTANTIATE_TEST_SUITE_P(Techniques, BidirStability, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "bdpt" : "lt"; });
 
 }  // namespace
 }  // namespace gdr::test

@@ -1,0 +1,199 @@
+#include "integrators/bidir/bidirectional.h"
+
+#include <algorithm>
+#include <charconv>
+
+#include "render/radiance_render.h"
+#include "render/wavefront/chunks.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace gdr {
+namespace {
+
+// Subpaths in flight per chunk: bounds the queues' and the light-vertex store's memory (about
+// 1 KB a pixel under bdpt).
+constexpr size_t kMaxPathsInFlight = size_t(1) << 18;
+constexpr const char* kProgram = "bidir/bidir.cl";
+
+// Mitsuba's max_depth: a light subpath's first vertex connected to the camera is 2 segments.
+bool light_subpaths_allowed(int max_depth) { return max_depth < 0 || max_depth >= 2; }
+
+// bdpt's longest path for the settings' max_depth (segments).
+int bdpt_segments(int max_depth) {
+  return max_depth < 0 || max_depth > kBdptMaxSegments ? kBdptMaxSegments : max_depth;
+}
+
+// "s,t": s light vertices, t camera vertices, a strategy of at least one segment that the
+// pinhole can take part in (t = 1 connects a light vertex beyond the light to the camera).
+void parse_strategy(const std::string& text, GdrBidirOptions* o) {
+  size_t comma = text.find(',');
+  int s = -1, t = -1;
+  auto whole = [](const char* a, const char* b, int* v) {
+    auto r = std::from_chars(a, b, *v);
+    return r.ec == std::errc() && r.ptr == b && *v >= 0;
+  };
+  bool ok = comma != std::string::npos && whole(text.data(), text.data() + comma, &s) &&
+            whole(text.data() + comma + 1, text.data() + text.size(), &t) && (t >= 2 || (t == 1 && s >= 2));
+  if (!ok) {
+    throw Error("integrator parameter strategy: '" + text +
+                "' is not s,t (s light and t camera vertices: t >= 2, or t = 1 with s >= 2)");
+  }
+  o->strategy_s = s;
+  o->strategy_t = t;
+}
+
+}  // namespace
+
+const std::vector<std::string> kLtParams = {"aux"};
+const std::vector<std::string> kBdptParams = {"aux", "mis", "strategy"};
+
+BidirSettings lt_settings(const IntegratorParams& params) {
+  BidirSettings s;
+  s.options.technique = BIDIR_LT;
+  s.aux = params.flag("aux", false);
+  return s;
+}
+
+BidirSettings bdpt_settings(const IntegratorParams& params) {
+  BidirSettings s;
+  s.options.technique = BIDIR_BDPT;
+  s.options.mis = params.choice("mis", "power", {"power", "balance"}) == "balance" ? BIDIR_MIS_BALANCE : BIDIR_MIS_POWER;
+  if (params.has("strategy")) parse_strategy(params.values().at("strategy"), &s.options);
+  s.aux = params.flag("aux", false);
+  return s;
+}
+
+Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settings)
+    : in_(in),
+      settings_(settings),
+      kernels_(in.context, in.scene),
+      lt_camera_(kernels_.make(kProgram, "lt_camera")),
+      lt_direct_(kernels_.make(kProgram, "lt_direct")),
+      emit_(kernels_.make(kProgram, "bidir_emit")),
+      light_shade_(kernels_.make(kProgram, "bidir_light_shade")),
+      camera_blocked_(kernels_.make(kProgram, "bidir_camera_blocked")),
+      generate_(kernels_.make(kProgram, "bdpt_generate")),
+      camera_shade_(kernels_.make(kProgram, "bdpt_camera_shade")),
+      connect_(kernels_.make(kProgram, "bdpt_connect")),
+      shadow_add_(kernels_.make(kProgram, "path_shadow_add")),
+      capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
+      store_vertices_(bdpt() ? kBdptMaxSegments - 2 : 0),
+      queues_(in.context, capacity_, true),
+      light_paths_(in.context, capacity_),
+      camera_paths_(in.context, bdpt() ? capacity_ : 0),
+      store_(in.context, capacity_ * size_t(store_vertices_)),
+      camera_vertices_(in.context, bdpt() ? capacity_ : 0),
+      connectable_(in.context, bdpt() ? capacity_ : 0),
+      shadow_rays_(in.context, capacity_, kRayQueueFlags),
+      shadow_values_(in.context, bdpt() ? capacity_ : 0),
+      counters_(in.context, GDR_COUNTER_NAMES(BIDIR_COUNTERS)),
+      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
+      splats_(in.context, kernels_, kProgram, capacity_) {
+  if (settings_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
+}
+
+void Bidirectional::trace_light_subpaths(const GdrPtParams& p) {
+  const GdrBidirOptions& o = settings_.options;
+  counters_.reset();
+  emit_.args(p, o, queues_.rays[0], queues_.slots[0], light_paths_, counters_.buffer(), in_.device_scene)
+      .run(p.pixel_count);
+  cl_uint active = counters_.read()[BIDIR_COUNTER_NEXT_RAYS];
+  for (int cur = 0; active > 0; cur = 1 - cur) {
+    intersect(in_.embree, queues_.rays[cur], active, false, "light");
+    counters_.reset();
+    light_shade_
+        .args(p, o, active, cl_uint(capacity_), in_.device_scene.camera(), queues_.rays[cur], queues_.slots[cur],
+              queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, splats_.slots(), light_paths_, store_,
+              counters_.buffer(), in_.device_scene)
+        .run(active);
+    counters_.read();
+    if (counters_[BIDIR_COUNTER_LIGHT_VERTICES] > 0) ++stored_bound_;
+    cl_uint shadows = counters_[BIDIR_COUNTER_SHADOW_RAYS];
+    if (shadows > 0) {
+      occlude(in_.embree, shadow_rays_, shadows, "camera_connection");
+      camera_blocked_.args(shadows, shadow_rays_, splats_.slots()).run(shadows);
+      splats_.gather(in_.device_scene.camera(), film_.height(), p.pixel_count, film_["radiance"]);
+    }
+    active = counters_[BIDIR_COUNTER_NEXT_RAYS];
+  }
+}
+
+void Bidirectional::trace_direct(const GdrPtParams& p) {
+  lt_camera_.args(in_.device_scene.camera(), p, queues_.rays[0]).run(p.pixel_count);
+  intersect(in_.embree, queues_.rays[0], p.pixel_count, true, "camera");
+  if (aux_) aux_->add(p, queues_.rays[0], p.pixel_count, in_.device_scene);
+  counters_.reset();
+  lt_direct_.args(p, p.pixel_count, queues_.rays[0], film_["radiance"], counters_.buffer(), in_.device_scene)
+      .run(p.pixel_count);
+  counters_.read();
+}
+
+void Bidirectional::add_shadows(cl_uint count, const char* kind) {
+  if (count == 0) return;
+  occlude(in_.embree, shadow_rays_, count, kind);
+  shadow_add_.args(count, shadow_rays_, shadow_values_, film_["radiance"]).run(count);
+}
+
+void Bidirectional::connect(const GdrPtParams& p, int camera_depth, cl_uint connectable) {
+  // Vertex j of a light subpath lies j + 1 bounces or more from its light, and the connection
+  // adds a segment.
+  const int last = std::min(stored_bound_, p.max_depth - camera_depth - 1);
+  for (int j = 0; j < last; ++j) {
+    counters_.reset();
+    connect_
+        .args(p, settings_.options, connectable, cl_uint(j), cl_uint(capacity_), connectable_, camera_vertices_,
+              light_paths_, store_, shadow_rays_, shadow_values_, counters_.buffer(), in_.device_scene)
+        .run(connectable);
+    counters_.read();
+    add_shadows(counters_[BIDIR_COUNTER_SHADOW_RAYS], "connection");
+  }
+}
+
+void Bidirectional::trace_camera_subpaths(const GdrPtParams& p) {
+  const GdrBidirOptions& o = settings_.options;
+  generate_.args(in_.device_scene.camera(), p, o, queues_.rays[0], queues_.slots[0], camera_paths_).run(p.pixel_count);
+  cl_uint active = p.pixel_count;
+  for (int depth = 0, cur = 0; active > 0; ++depth, cur = 1 - cur) {
+    intersect(in_.embree, queues_.rays[cur], active, depth == 0, depth == 0 ? "camera" : "bounce");
+    if (depth == 0 && aux_) aux_->add(p, queues_.rays[cur], active, in_.device_scene);
+    counters_.reset();
+    camera_shade_
+        .args(p, o, active, queues_.rays[cur], queues_.slots[cur], queues_.rays[1 - cur], queues_.slots[1 - cur],
+              shadow_rays_, shadow_values_, camera_paths_, camera_vertices_, connectable_, film_["radiance"],
+              counters_.buffer(), in_.device_scene)
+        .run(active);
+    counters_.read();
+    cl_uint connectable = counters_[BIDIR_COUNTER_CONNECTABLE];
+    active = counters_[BIDIR_COUNTER_NEXT_RAYS];
+    add_shadows(counters_[BIDIR_COUNTER_SHADOW_RAYS], "shadow");
+    if (connectable > 0) connect(p, depth + 1, connectable);
+  }
+}
+
+void Bidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
+  GdrPtParams p = in_.device_scene.path_params(settings, sample, first, count);
+  bool light = light_subpaths_allowed(settings.max_depth) && p.light_count > 0;
+  if (bdpt()) {
+    p.max_depth = bdpt_segments(settings.max_depth);
+    stored_bound_ = 0;
+    if (light) trace_light_subpaths(p);
+    trace_camera_subpaths(p);
+  } else {
+    if (p.max_depth != 0) trace_direct(p);
+    if (light) trace_light_subpaths(p);
+  }
+  counters_.report(in_.context.stats());
+}
+
+RenderResult Bidirectional::render(const RenderSettings& settings) {
+  if (bdpt() && bdpt_segments(settings.max_depth) != settings.max_depth) {
+    log::warn("bdpt renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
+              " asked for more): the light-vertex store's bound");
+  }
+  return render_radiance(in_.context, settings, film_, aux_, capacity_, [&](uint32_t sample, uint32_t first, uint32_t count) {
+    trace_chunk(settings, sample, first, count);
+  });
+}
+
+}  // namespace gdr

@@ -1,0 +1,391 @@
+// The bidirectional integrator: light tracing (`lt`) and bidirectional path tracing (`bdpt`) as
+// one algorithm, SmallVCM's (src/vertexcm.hxx), with the host tracing every ray with Embree
+// between the kernels.
+//
+// Light subpaths start at the lights (emission sampling) and scatter by importance transport;
+// every vertex on a non-delta surface is connected to the camera and splatted (t = 1), and under
+// bdpt also kept in the light-vertex store. lt adds the emission the camera sees directly with one
+// camera ray per pixel (a light subpath cannot reach the pinhole by itself). bdpt instead traces
+// a camera subpath per pixel whose every vertex adds what it finds emitting (s = 0), connects to a
+// light point (s = 1) and to each stored vertex of its pixel's light subpath (s >= 2), every
+// strategy weighted by MIS from the running sums of bidir/subpath_mis.h.
+//
+// Path lengths follow Mitsuba's max_depth (segments): a strategy with s light and t camera
+// vertices makes a path of s + t - 1 segments; emission seen directly is one segment.
+#include "camera/importance.h"
+#include "light/emission.h"
+#include "path/aux.h"
+#include "path/camera_sample.h"
+#include "path/continuation.h"
+#include "path/emission.h"
+#include "path/film.h"
+#include "path/scene.h"
+#include "path/shadow.h"
+#include "path/spawn.h"
+#include "path/splat.h"
+#include "bidir/subpath_mis.h"
+#include "path/nee.h"
+#include "shared/bidir_types.h"
+#include "shared/ray_types.h"
+
+// Mitsuba's max_depth allows `segments` path segments (< 0: unbounded).
+inline int segments_allowed(int max_depth, int segments) { return max_depth < 0 || segments <= max_depth; }
+
+// Camera rays of pixels [first_pixel, first_pixel + pixel_count), for the emission seen directly.
+__kernel void lt_camera(__global const GdrCamera* camera, GdrPtParams params, __global GdrRayHit* rays) {
+  uint i = get_global_id(0);
+  if (i >= params.pixel_count) return;
+  GdrCamera cam = *camera;
+  CameraRay r = pixel_camera_ray(&cam, params.seed, params.first_pixel + i, params.sample);
+  write_camera_ray(&rays[i], &r, i);
+}
+
+// Adds what the camera rays' first hits emit toward the camera (area lights) or what their
+// escape direction sees (the environment).
+__kernel void lt_direct(GdrPtParams params, uint count, __global const GdrRayHit* rays, __global float4* film,
+                        __global uint* counters, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count || !segments_allowed(params.max_depth, 1)) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  __global uint* nonfinite = &counters[BIDIR_COUNTER_NONFINITE];
+  GdrRayHit rh = rays[i];
+  uint pixel = params.first_pixel + rh.ray.id;
+  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  if (rh.hit.geomID == GDR_INVALID_ID) {
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+    if (s.env_light >= 0) film_add(film, pixel, escaped_radiance(&s, dir), nonfinite);
+#endif
+    return;
+  }
+#if defined(GDR_LIGHT_AREA)
+  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  if (su.light >= 0) film_add(film, pixel, surface_radiance(&s, &su, -dir), nonfinite);
+#endif
+}
+
+// Light subpaths [first_pixel, first_pixel + pixel_count) of the pass leave their lights: the
+// emission sample, the first throughput and MIS sums, and the ray into queue 0 (compacted).
+__kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrRayHit* rays, __global uint* queue,
+                         __global GdrBidirPathState* paths, __global uint* counters, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= params.pixel_count) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  uint index = params.first_pixel + i;
+  paths[i].stored = 0;
+  PathSampler ps = path_sampler(params.seed, index, params.sample);
+  float4 ue = sampler_block(&ps, RNG_BLOCK_EMISSION), ud = sampler_block(&ps, RNG_BLOCK_EMISSION_DIR);
+  EmissionSample e;
+  if (!light_emission_sample(&s, ue.x, ue.yz, ud.xy, &e)) return;
+  float3 beta = emission_throughput(&e);
+  if (!finite_or_count(beta, &counters[BIDIR_COUNTER_NONFINITE]) || !(max3(beta) > 0.0f)) return;
+  atomic_inc(&counters[BIDIR_COUNTER_SUBPATHS]);
+  GdrBidirPathState st;
+  vstore3(beta, 0, st.throughput);
+  st.rr_scale = max3(beta);
+  st.index = index;
+  st.sample = params.sample;
+  st.depth = 0;
+  st.stored = 0;
+  st.pad0 = 0;
+  mis_light_start(&s, &e, opts.mis, &st);
+  paths[i] = st;
+  uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
+  queue[k] = i;
+  // Area lights: off the emitting surface; the other lights' points lie on no surface.
+  float3 o = dot(e.n, e.n) > 0.0f ? leaving_origin(e.p, e.n, e.dir) : e.p;
+  write_ray_hit(&rays[k], o, e.dir, 0.0f, INFINITY, i);
+}
+
+// A light subpath's new vertex: under bdpt it joins the light-vertex store (vertex j of subpath
+// `slot` at store[j * stride + slot]); its connection to the camera (a splat in the path's slot
+// and a shadow ray toward the camera); its continuation by importance transport.
+__kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint count, uint stride,
+                                __global const GdrCamera* camera, __global const GdrRayHit* rays_in,
+                                __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
+                                __global GdrRay* shadow_rays, __global GdrSplat* splats,
+                                __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
+                                __global uint* counters, SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  GdrRayHit rh = rays_in[q];
+  if (rh.hit.geomID == GDR_INVALID_ID) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  __global uint* nonfinite = &counters[BIDIR_COUNTER_NONFINITE];
+  uint slot = queue_in[q];
+  GdrBidirPathState st = paths[slot];
+  float3 beta = vload3(0, st.throughput);
+  int k = st.depth + 1;  // this vertex's bounces from the light
+  float3 wo = -(float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  Bsdf b = surface_bsdf(&s, &su);
+  Frame frame = frame_from_normal(su.ns);
+  float3 wo_local = frame_to_local(&frame, wo);
+  int bdpt = opts.technique == BIDIR_BDPT;
+
+  // Where the shading normal puts the light-side direction on the other side of the surface, the
+  // path ends, as a camera path's sample toward the light does (path/sides.h): lt and pt accept
+  // the same paths. The camera-side direction is left to the BSDF, as a camera ray's is.
+  if (!sides_agree(wo, su.ng, wo_local.z)) return;
+  mis_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), opts.mis, &st);
+  int delta = bsdf_is_delta(&b);
+
+  // A camera vertex and the connection make at least two more segments.
+  if (bdpt && !delta && segments_allowed(params.max_depth, k + 2)) {
+    GdrBidirVertex v;
+    v.prim = rh.hit.primID;
+    v.u = rh.hit.u;
+    v.v = rh.hit.v;
+    vstore3(wo, 0, v.wo);
+    vstore3(beta, 0, v.throughput);
+    v.dvcm = st.dvcm;
+    v.dvc = st.dvc;
+    v.depth = k;
+    store[(uint)st.stored * stride + slot] = v;
+    st.stored += 1;
+    atomic_inc(&counters[BIDIR_COUNTER_LIGHT_VERTICES]);
+  }
+
+  // Connection to the camera: beta f (cos / d^2) cos_theta We, spread by the pixels' filters.
+  GdrCamera cam = *camera;
+  CameraProjection pr;
+  if (segments_allowed(params.max_depth, k + 1) && !delta && bidir_strategy_shown(&opts, k + 1, 1) &&
+      camera_project(&cam, su.p, &pr)) {
+    float3 wc = -pr.dir, wc_local = frame_to_local(&frame, wc);
+    float3 f = bsdf_eval_transport(&b, wo_local, wc_local, TRANSPORT_IMPORTANCE) *
+               shading_normal_correction(wo, wc, su.ng, wo_local.z, wc_local.z);
+    float w = 1.0f;
+    if (bdpt) {
+      float pdf_camera = camera_pdf_dir(&cam, pr.cos_theta) * fabs(dot(su.ng, wc)) / (pr.dist * pr.dist);
+      float pdf_rev = bsdf_pdf(&b, wc_local, wo_local);
+      w = bidir_weight(&opts, mis_weight(mis_side(pdf_camera, st.dvcm, st.dvc, pdf_rev, opts.mis)));
+    }
+    float3 c = beta * f * (w * pr.cos_theta * camera_we(&cam, pr.cos_theta) / (pr.dist * pr.dist));
+    if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
+      splat_write(&splats[slot], pr.raster, c);
+      uint r = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
+      atomic_inc(&counters[BIDIR_COUNTER_CAMERA_CONNECTIONS]);
+      write_segment_ray(&shadow_rays[r], su.p, su.ng, camera_position(&cam), slot);
+    }
+  }
+
+  // Continuation: the next vertex would make k + 2 segments once connected.
+  if (!segments_allowed(params.max_depth, k + 2)) {
+    paths[slot] = st;
+    return;
+  }
+  PathSampler ps = path_sampler(params.seed, st.index, st.sample);
+  BsdfSample bs;
+  float3 wi;
+  float rr;
+  int next = path_continue_transport(st.depth, &ps, RNG_BLOCK_SUBPATH_BSDF(st.depth), params.rr_depth, st.rr_scale,
+                                     TRANSPORT_IMPORTANCE, &b, &frame, su.ng, wo_local, &beta, &bs, &wi, &rr);
+  if (next == PATH_ENDS_NONFINITE) atomic_inc(nonfinite);
+  if (next != PATH_CONTINUES) {
+    paths[slot] = st;
+    return;
+  }
+  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), opts.mis, &st);
+  st.depth = k;
+  vstore3(beta, 0, st.throughput);
+  paths[slot] = st;
+  uint n = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
+  queue_out[n] = slot;
+  spawn_ray(&rays_out[n], su.p, su.ng, wi, slot);
+}
+
+// Empties the splat slots whose shadow ray toward the camera Embree found blocked.
+__kernel void bidir_camera_blocked(uint count, __global const GdrRay* shadow_rays, __global GdrSplat* splats) {
+  uint k = get_global_id(0);
+  if (k >= count) return;
+  if (!shadow_unoccluded(shadow_rays[k].tfar)) splat_drop(&splats[shadow_rays[k].id]);
+}
+
+// bdpt's camera subpaths of pixels [first_pixel, first_pixel + pixel_count): the ray, the state
+// and the MIS sums of the camera vertex.
+__kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
+                            __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths) {
+  uint i = get_global_id(0);
+  if (i >= params.pixel_count) return;
+  GdrCamera cam = *camera;
+  uint pixel = params.first_pixel + i;
+  CameraRay r = pixel_camera_ray(&cam, params.seed, pixel, params.sample);
+  write_camera_ray(&rays[i], &r, i);
+  queue[i] = i;
+  GdrBidirPathState st;
+  st.throughput[0] = st.throughput[1] = st.throughput[2] = 1.0f;
+  st.rr_scale = 1.0f;
+  st.index = pixel;
+  st.sample = params.sample;
+  st.depth = 0;
+  st.stored = 0;
+  st.pad0 = 0;
+  mis_camera_start(&cam, camera_cos_theta(&cam, r.d), opts.mis, &st);
+  paths[i] = st;
+}
+
+// The weight of emission a camera subpath found (s = 0): 1 seen directly (no other strategy
+// reaches the pinhole), else against the light point's direct and emission pdfs.
+inline float bdpt_emission_weight(const GdrBidirOptions* o, const GdrBidirPathState* st, float direct,
+                                  float emission) {
+  return st->depth == 0 ? 1.0f : bidir_weight(o, mis_emission_weight(direct, emission, st, o->mis));
+}
+
+// A camera subpath's new vertex: what it sees emitting (s = 0), its connection to a light point
+// (s = 1, a shadow ray with its value), its record for the connections to the light-vertex store
+// (camera_vertices[slot], the slot queued in `connectable`), and its continuation.
+__kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint count,
+                                __global const GdrRayHit* rays_in, __global const uint* queue_in,
+                                __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
+                                __global float4* shadow_values, __global GdrBidirPathState* paths,
+                                __global GdrBidirVertex* camera_vertices, __global uint* connectable,
+                                __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  __global uint* nonfinite = &counters[BIDIR_COUNTER_NONFINITE];
+  uint slot = queue_in[q];
+  GdrBidirPathState st = paths[slot];
+  GdrRayHit rh = rays_in[q];
+  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  float3 beta = vload3(0, st.throughput);
+  int t = st.depth + 1;  // this vertex's segments from the camera
+  if (!segments_allowed(params.max_depth, t)) return;
+
+  if (rh.hit.geomID == GDR_INVALID_ID) {
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+    if (s.env_light >= 0 && bidir_strategy_shown(&opts, 0, t + 1)) {
+      float direct = escaped_light_pdf(&s, dir);
+      float emission = direct * light_emission_over_direct(&s, s.env_light, (float3)(0.0f), -dir);
+      float w = bdpt_emission_weight(&opts, &st, direct, emission);
+      film_add(film, st.index, beta * escaped_radiance(&s, dir) * w, nonfinite);
+    }
+#endif
+    return;
+  }
+
+  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  float3 wo = -dir;
+  mis_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), opts.mis, &st);
+#if defined(GDR_LIGHT_AREA)
+  if (su.light >= 0 && bidir_strategy_shown(&opts, 0, t + 1)) {
+    float3 le = surface_radiance(&s, &su, wo);
+    if (max3(le) > 0.0f) {
+      float direct = light_pmf(&s, su.light) * light_emission_pdf_pos(&s, su.light, su.area);
+      float emission = direct * light_emission_over_direct(&s, su.light, su.ng, wo);
+      film_add(film, st.index, beta * le * bdpt_emission_weight(&opts, &st, direct, emission), nonfinite);
+    }
+  }
+#endif
+  if (!segments_allowed(params.max_depth, t + 1)) return;
+
+  Bsdf b = surface_bsdf(&s, &su);
+  Frame frame = frame_from_normal(su.ns);
+  float3 wo_local = frame_to_local(&frame, wo);
+  PathSampler ps = path_sampler(params.seed, st.index, st.sample);
+  int delta = bsdf_is_delta(&b);
+
+  // Connection to a light point (s = 1).
+  int light;
+  LightSample ls;
+  float3 wi_local;
+  if (bidir_strategy_shown(&opts, 1, t + 1) && nee_applies(&s, &b) &&
+      nee_sample(&s, &ps, st.depth, &su, &frame, &light, &ls, &wi_local)) {
+    float pdf_fwd = bsdf_pdf(&b, wo_local, wi_local), pdf_rev = bsdf_pdf(&b, wi_local, wo_local);
+    float cos_z = fabs(dot(su.ng, ls.wi));
+    float w_light = ls.delta ? 0.0f : mis_power_of(pdf_fwd / ls.pdf, opts.mis);
+    float pdf_emit = light_emission_over_direct(&s, light, ls.light_normal, -ls.wi) * cos_z;
+    if (!light_is_infinite(&s, light)) pdf_emit /= ls.dist * ls.dist;
+    float w_camera = mis_side(pdf_emit, st.dvcm, st.dvc, pdf_rev, opts.mis);
+    float w = bidir_weight(&opts, mis_weight(w_light + w_camera));
+    float3 c = beta * bsdf_eval(&b, wo_local, wi_local) * ls.radiance * (w / ls.pdf);
+    if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
+      uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
+      atomic_inc(&counters[BIDIR_COUNTER_NEE]);
+      write_light_ray(&shadow_rays[k], su.p, su.ng, ls.wi, ls.dist, st.index);
+      shadow_values[k] = (float4)(c, 0.0f);
+    }
+  }
+
+  // Open to the light subpath's stored vertices (s >= 2: at least one more segment each side).
+  if (!delta && segments_allowed(params.max_depth, t + 2)) {
+    GdrBidirVertex v;
+    v.prim = rh.hit.primID;
+    v.u = rh.hit.u;
+    v.v = rh.hit.v;
+    vstore3(wo, 0, v.wo);
+    vstore3(beta, 0, v.throughput);
+    v.dvcm = st.dvcm;
+    v.dvc = st.dvc;
+    v.depth = t;
+    camera_vertices[slot] = v;
+    connectable[atomic_inc(&counters[BIDIR_COUNTER_CONNECTABLE])] = slot;
+  }
+
+  // BSDF sampling continues the subpath.
+  BsdfSample bs;
+  float3 wi;
+  float rr;
+  int next = path_continue_transport(st.depth, &ps, RNG_BLOCK_BSDF(st.depth), params.rr_depth, 1.0f,
+                                     TRANSPORT_RADIANCE, &b, &frame, su.ng, wo_local, &beta, &bs, &wi, &rr);
+  if (next == PATH_ENDS_NONFINITE) atomic_inc(nonfinite);
+  if (next != PATH_CONTINUES) return;
+  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), opts.mis, &st);
+  st.depth = t;
+  vstore3(beta, 0, st.throughput);
+  paths[slot] = st;
+  uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
+  queue_out[k] = slot;
+  spawn_ray(&rays_out[k], su.p, su.ng, wi, slot);
+}
+
+// Connects the camera vertices queued in `connectable` to vertex j of their pixel's light subpath
+// (s = depth_y + 1 light vertices, t = depth_z + 1 camera vertices): the value and a shadow ray
+// between the two surfaces, added by path_shadow_add where unoccluded.
+__kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count, uint j, uint stride,
+                           __global const uint* connectable, __global const GdrBidirVertex* camera_vertices,
+                           __global const GdrBidirPathState* light_paths, __global const GdrBidirVertex* store,
+                           __global GdrRay* shadow_rays, __global float4* shadow_values, __global uint* counters,
+                           SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  uint slot = connectable[q];
+  if ((int)j >= light_paths[slot].stored) return;
+  GdrBidirVertex z = camera_vertices[slot], y = store[j * stride + slot];
+  if (!segments_allowed(params.max_depth, z.depth + y.depth + 1) ||
+      !bidir_strategy_shown(&opts, y.depth + 1, z.depth + 1)) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  atomic_inc(&counters[BIDIR_COUNTER_CONNECTIONS]);
+  Surface sz = surface_at(&s, z.prim, z.u, z.v), sy = surface_at(&s, y.prim, y.u, y.v);
+  float3 d = sy.p - sz.p;
+  float dist2 = dot(d, d);
+  if (!(dist2 > 0.0f)) return;
+  float dist = sqrt(dist2);
+  float3 dir = d / dist;  // from the camera vertex toward the light vertex
+
+  // The camera vertex in radiance transport, with the side check of its light-side direction;
+  // the light vertex in importance transport, with the shading-normal correction (as lt's
+  // camera connection: bidir_light_shade).
+  Bsdf bz = surface_bsdf(&s, &sz), by = surface_bsdf(&s, &sy);
+  Frame fz = frame_from_normal(sz.ns), fy = frame_from_normal(sy.ns);
+  float3 wo_z = vload3(0, z.wo), wo_y = vload3(0, y.wo);
+  float3 wo_z_local = frame_to_local(&fz, wo_z), dir_z_local = frame_to_local(&fz, dir);
+  float3 wo_y_local = frame_to_local(&fy, wo_y), dir_y_local = frame_to_local(&fy, -dir);
+  if (!sides_agree(dir, sz.ng, dir_z_local.z)) return;
+  float3 f_z = bsdf_eval(&bz, wo_z_local, dir_z_local);
+  float3 f_y = bsdf_eval_transport(&by, wo_y_local, dir_y_local, TRANSPORT_IMPORTANCE) *
+               shading_normal_correction(wo_y, -dir, sy.ng, wo_y_local.z, dir_y_local.z);
+  float3 c = vload3(0, z.throughput) * f_z * f_y * vload3(0, y.throughput) / dist2;
+  if (!(max3(c) > 0.0f)) return;
+
+  // Each side's vertex as the other side's BSDF would have drawn it (area pdfs).
+  float pdf_z_fwd = bsdf_pdf(&bz, wo_z_local, dir_z_local), pdf_z_rev = bsdf_pdf(&bz, dir_z_local, wo_z_local);
+  float pdf_y_fwd = bsdf_pdf(&by, wo_y_local, dir_y_local), pdf_y_rev = bsdf_pdf(&by, dir_y_local, wo_y_local);
+  float w_light = mis_side(pdf_z_fwd * fabs(dot(sy.ng, dir)) / dist2, y.dvcm, y.dvc, pdf_y_rev, opts.mis);
+  float w_camera = mis_side(pdf_y_fwd * fabs(dot(sz.ng, dir)) / dist2, z.dvcm, z.dvc, pdf_z_rev, opts.mis);
+  c *= bidir_weight(&opts, mis_weight(w_light + w_camera));
+  if (!(max3(c) > 0.0f) || !finite_or_count(c, &counters[BIDIR_COUNTER_NONFINITE])) return;
+  uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
+  float3 to = leaving_origin(sy.p, sy.ng, -dir);
+  write_segment_ray(&shadow_rays[k], sz.p, sz.ng, to, params.first_pixel + slot);
+  shadow_values[k] = (float4)(c, 0.0f);
+}

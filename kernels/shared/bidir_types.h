@@ -1,0 +1,60 @@
+// State of the bidirectional integrator (`lt`, `bdpt`), shared by its kernels and the host loop.
+#pragma once
+#include "shared/counters.h"
+
+// The techniques one render combines (GdrBidirOptions.technique).
+#define BIDIR_LT 0    // light subpaths to the camera, emission seen directly: nothing to weigh
+#define BIDIR_BDPT 1  // every connection of a camera and a light subpath, weighted by MIS
+
+#define BIDIR_MIS_BALANCE 1
+#define BIDIR_MIS_POWER 2
+
+// Per-render options of the kernels.
+typedef struct GdrBidirOptions {
+  int technique;   // BIDIR_*
+  int mis;         // BIDIR_MIS_* (bdpt)
+  int strategy_s;  // >= 0: only the strategy with s light and t camera vertices, unweighted
+  int strategy_t;
+} GdrBidirOptions;
+
+#define BIDIR_PATH_SPECULAR 1  // the last scattering sampled a delta lobe
+#define BIDIR_PATH_INFINITE 2  // a light subpath from a light at infinity (its first segment has no length)
+
+// A camera or light subpath between bounces. dvcm and dvc are the running MIS sums of SmallVCM
+// (Georgiev et al. 2012, "Implementing Vertex Connection and Merging"): with them a vertex knows
+// the weights of every strategy that could have sampled its subpath without walking it again.
+typedef struct GdrBidirPathState {
+  float throughput[3];
+  float rr_scale;        // largest component of the first throughput (Russian roulette's unit)
+  float dvcm, dvc;
+  unsigned int index;    // camera: the pixel; light: the subpath's index in its pass
+  unsigned int sample;   // the pass
+  int depth;             // scattering vertices so far (0: leaving the light or the camera)
+  int stored;            // light subpaths: vertices written to the light-vertex store
+  int flags;             // BIDIR_PATH_*
+  int pad0;
+} GdrBidirPathState;
+
+// A subpath vertex on a non-delta surface, kept for connections: the surface is found again from
+// its triangle and barycentrics; wo points toward the vertex before it on its own subpath.
+typedef struct GdrBidirVertex {
+  unsigned int prim;
+  float u, v;
+  float wo[3];
+  float throughput[3];
+  float dvcm, dvc;
+  int depth;  // scattering vertices up to and including this one
+} GdrBidirVertex;
+
+// Counters the kernels increment (atomic_inc), read after each step.
+#define BIDIR_COUNTERS(X)                                                                               \
+  X(BIDIR_COUNTER_NEXT_RAYS, "")                            /* rays written for the next bounce */      \
+  X(BIDIR_COUNTER_SHADOW_RAYS, "")                          /* shadow rays written by this step */      \
+  X(BIDIR_COUNTER_CONNECTABLE, "")                          /* camera vertices open to connections */   \
+  X(BIDIR_COUNTER_CAMERA_CONNECTIONS, "bidir/camera_connections") /* light vertices sent to the camera */ \
+  X(BIDIR_COUNTER_SUBPATHS, "bidir/light_subpaths")         /* light subpaths leaving a light */        \
+  X(BIDIR_COUNTER_LIGHT_VERTICES, "bidir/light_vertices")   /* vertices kept for connections */         \
+  X(BIDIR_COUNTER_CONNECTIONS, "bidir/connections")         /* camera-light vertex connections tried */ \
+  X(BIDIR_COUNTER_NEE, "bidir/light_connections")           /* camera vertices connected to a light */  \
+  X(BIDIR_COUNTER_NONFINITE, "samples/nonfinite_rejected")  /* NaN or Inf contributions dropped */
+enum { BIDIR_COUNTERS(GDR_COUNTER_ENUM) BIDIR_COUNTER_COUNT };
