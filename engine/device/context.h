@@ -266,6 +266,13 @@ class Buffer {
              "clEnqueueFillBuffer");
   }
 
+  // Copies the first `count` elements into dst on the device (queued in order).
+  void copy_to(Buffer<T>& dst, size_t count) const {
+    if (count == 0) return;
+    cl_check(clEnqueueCopyBuffer(context_->queue(), mem_, dst.mem_, 0, 0, count * sizeof(T), 0, nullptr, nullptr),
+             "clEnqueueCopyBuffer");
+  }
+
  private:
   Context* context_ = nullptr;
   cl_mem mem_ = nullptr;

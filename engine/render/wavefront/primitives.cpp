@@ -1,0 +1,63 @@
+#include "render/wavefront/primitives.h"
+
+namespace gdr {
+namespace {
+
+constexpr const char* kProgram = "wavefront/scan.cl";
+constexpr size_t kBlock = 256;  // SCAN_BLOCK
+
+size_t blocks_of(size_t n) { return (n + kBlock - 1) / kBlock; }
+
+}  // namespace
+
+DevicePrimitives::DevicePrimitives(Context& ctx)
+    : ctx_(ctx),
+      scan_blocks_(ctx.program(kProgram)->kernel("scan_blocks")),
+      scan_add_(ctx.program(kProgram)->kernel("scan_add")),
+      compact_(ctx.program(kProgram)->kernel("compact_scatter")),
+      count_(ctx.program(kProgram)->kernel("sort_count")),
+      scatter_(ctx.program(kProgram)->kernel("sort_scatter")),
+      order_(ctx.program(kProgram)->kernel("sort_order_buckets")) {}
+
+cl_uint DevicePrimitives::scan_level(Buffer<cl_uint>& data, size_t n, size_t level) {
+  const size_t blocks = blocks_of(n);
+  if (sums_.size() <= level) sums_.resize(level + 1);
+  if (sums_[level].size() < blocks) sums_[level] = Buffer<cl_uint>(ctx_, blocks);
+  Buffer<cl_uint>& sums = sums_[level];
+  scan_blocks_.args(data, cl_uint(n), sums).run(blocks * kBlock, kBlock);
+  cl_uint total = 0;
+  if (blocks == 1) {
+    sums.read(&total, 1);
+    return total;
+  }
+  total = scan_level(sums, blocks, level + 1);
+  scan_add_.args(data, cl_uint(n), sums).run(n);
+  return total;
+}
+
+cl_uint DevicePrimitives::exclusive_scan(Buffer<cl_uint>& data, size_t n) {
+  return n == 0 ? 0 : scan_level(data, n, 0);
+}
+
+cl_uint DevicePrimitives::compact(const Buffer<cl_uint>& flags, const Buffer<cl_uint>& items, size_t n,
+                                  Buffer<cl_uint>& offsets, Buffer<cl_uint>& out) {
+  if (n == 0) return 0;
+  flags.copy_to(offsets, n);
+  cl_uint count = exclusive_scan(offsets, n);
+  compact_.args(flags, offsets, items, cl_uint(n), out).run(n);
+  return count;
+}
+
+cl_uint DevicePrimitives::sort_by_key(const Buffer<cl_uint>& keys, size_t n, cl_uint buckets, Buffer<cl_uint>& starts,
+                                      Buffer<cl_uint>& sorted) {
+  starts.fill(0u);
+  if (cursor_.size() < buckets) cursor_ = Buffer<cl_uint>(ctx_, buckets);
+  cursor_.fill(0u);
+  if (n > 0) count_.args(keys, cl_uint(n), buckets, starts).run(n);
+  cl_uint total = exclusive_scan(starts, size_t(buckets) + 1);
+  if (n > 0) scatter_.args(keys, cl_uint(n), buckets, starts, cursor_, sorted).run(n);
+  order_.args(starts, buckets, sorted).run(buckets);
+  return total;
+}
+
+}  // namespace gdr

@@ -1,0 +1,69 @@
+// Data-parallel primitives over uint arrays, for the wavefront stages that route, compact and
+// sort work (engine/render/wavefront/primitives.h): an exclusive prefix sum in blocks of
+// SCAN_BLOCK items (each block scanned in local memory, the block sums scanned the same way and
+// added back), the compaction it enables, and a counting sort by key whose buckets are then put
+// in index order, so that the result does not depend on the order atomics ran in.
+#define SCAN_BLOCK 256
+
+// Work group g scans items [g * SCAN_BLOCK, (g + 1) * SCAN_BLOCK) of data in place (exclusive)
+// and writes their total to sums[g]. Launched with local size SCAN_BLOCK.
+__kernel void scan_blocks(__global uint* data, uint n, __global uint* sums) {
+  __local uint tmp[SCAN_BLOCK];
+  uint l = get_local_id(0), g = get_group_id(0), i = g * SCAN_BLOCK + l;
+  uint v = i < n ? data[i] : 0u;
+  tmp[l] = v;
+  barrier(CLK_LOCAL_MEM_FENCE);
+  // Hillis-Steele inclusive scan: log2(SCAN_BLOCK) steps.
+  for (uint offset = 1; offset < SCAN_BLOCK; offset <<= 1) {
+    uint add = l >= offset ? tmp[l - offset] : 0u;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    tmp[l] += add;
+    barrier(CLK_LOCAL_MEM_FENCE);
+  }
+  if (i < n) data[i] = tmp[l] - v;
+  if (l == SCAN_BLOCK - 1) sums[g] = tmp[l];
+}
+
+// Adds the scanned block sums to the items of their blocks.
+__kernel void scan_add(__global uint* data, uint n, __global const uint* sums) {
+  uint i = get_global_id(0);
+  if (i < n) data[i] += sums[i / SCAN_BLOCK];
+}
+
+// Compaction: item i with flags[i] != 0 goes to out[offsets[i]] (offsets: the exclusive scan of
+// the flags), keeping the items' order.
+__kernel void compact_scatter(__global const uint* flags, __global const uint* offsets, __global const uint* items,
+                              uint n, __global uint* out) {
+  uint i = get_global_id(0);
+  if (i < n && flags[i]) out[offsets[i]] = items[i];
+}
+
+// Counting sort by key, step 1: how many items each key has (keys >= buckets are left out).
+__kernel void sort_count(__global const uint* keys, uint n, uint buckets, __global uint* counts) {
+  uint i = get_global_id(0);
+  if (i >= n || keys[i] >= buckets) return;
+  atomic_inc(&counts[keys[i]]);
+}
+
+// Step 2, after the exclusive scan of the counts (buckets + 1 of them, the last 0) into starts:
+// item indices into their buckets (cursor: zeroed, one per bucket).
+__kernel void sort_scatter(__global const uint* keys, uint n, uint buckets, __global const uint* starts,
+                           __global uint* cursor, __global uint* sorted) {
+  uint i = get_global_id(0);
+  if (i >= n || keys[i] >= buckets) return;
+  uint k = keys[i];
+  sorted[starts[k] + atomic_inc(&cursor[k])] = i;
+}
+
+// Step 3: each bucket's indices in ascending order (insertion sort: buckets are small), so the
+// sort is stable and deterministic.
+__kernel void sort_order_buckets(__global const uint* starts, uint buckets, __global uint* sorted) {
+  uint b = get_global_id(0);
+  if (b >= buckets) return;
+  uint lo = starts[b], hi = starts[b + 1];
+  for (uint i = lo + 1; i < hi; ++i) {
+    uint v = sorted[i], j = i;
+    for (; j > lo && sorted[j - 1] > v; --j) sorted[j] = sorted[j - 1];
+    sorted[j] = v;
+  }
+}
