@@ -142,6 +142,11 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(strategy_check());
   param("--mis", "mis", "heuristic weighting the strategies: power (default) | balance")
       ->check(CLI::IsMember({"power", "balance"}));
+  param("--radius", "radius",
+        "initial merging radius over the radius of the scene's bounding sphere (default 1.5 / max(width, height))")
+      ->check(kFinitePositive);
+  param("--radius-alpha", "radius_alpha", "alpha of the radius schedule r_i = r_0 i^((alpha - 1) / 2), in (0, 1] (default 0.75)")
+      ->check(kFinitePositive);
   params.push_back({nullptr, "aux", "true"});
   params.back().option = app.add_flag("--aux")
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")

@@ -38,6 +38,17 @@ std::vector<IntegratorEntry> make_registry() {
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<Bidirectional>(in, bdpt_settings(p));
        }},
+      {"pm", "progressive photon mapping: photons from the lights merged at each pixel's first rough vertex, "
+             "the radius shrinking by pass",
+       false, kPmParams, {"ppm", "sppm", "photonmapper"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<Bidirectional>(in, pm_settings(p));
+       }},
+      {"vcm", "vertex connection and merging: bdpt's connections and photon merging weighted together by MIS",
+       false, kVcmParams, {"vcm"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<Bidirectional>(in, vcm_settings(p));
+       }},
   };
 }
 

@@ -23,6 +23,7 @@
 #include "path/shadow.h"
 #include "path/spawn.h"
 #include "path/splat.h"
+#include "bidir/hash_grid.h"
 #include "bidir/subpath_mis.h"
 #include "path/nee.h"
 #include "shared/bidir_types.h"
@@ -86,8 +87,7 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
   st.sample = params.sample;
   st.depth = 0;
   st.stored = 0;
-  st.pad0 = 0;
-  mis_light_start(&s, &e, opts.mis, &st);
+  mis_light_start(&s, &e, &opts, &st);
   paths[i] = st;
   uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
   queue[k] = i;
@@ -120,7 +120,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   Bsdf b = surface_bsdf(&s, &su);
   Frame frame = frame_from_normal(su.ns);
   float3 wo_local = frame_to_local(&frame, wo);
-  int bdpt = opts.technique == BIDIR_BDPT;
+  int connects = bidir_connects(&opts);
 
   // Where the shading normal puts the light-side direction on the other side of the surface, the
   // path ends, as a camera path's sample toward the light does (path/sides.h): lt and pt accept
@@ -129,8 +129,10 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   mis_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), opts.mis, &st);
   int delta = bsdf_is_delta(&b);
 
-  // A camera vertex and the connection make at least two more segments.
-  if (bdpt && !delta && segments_allowed(params.max_depth, k + 2)) {
+  // Kept for connections (a camera vertex and the connection make two more segments at least) and
+  // for merging (a camera vertex, one more).
+  if (!delta && ((connects && segments_allowed(params.max_depth, k + 2)) ||
+                 (bidir_merges(&opts) && segments_allowed(params.max_depth, k + 1)))) {
     GdrBidirVertex v;
     v.prim = rh.hit.primID;
     v.u = rh.hit.u;
@@ -139,6 +141,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     vstore3(beta, 0, v.throughput);
     v.dvcm = st.dvcm;
     v.dvc = st.dvc;
+    v.dvm = st.dvm;
     v.depth = k;
     store[(uint)st.stored * stride + slot] = v;
     st.stored += 1;
@@ -148,16 +151,16 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   // Connection to the camera: beta f (cos / d^2) cos_theta We, spread by the pixels' filters.
   GdrCamera cam = *camera;
   CameraProjection pr;
-  if (segments_allowed(params.max_depth, k + 1) && !delta && bidir_strategy_shown(&opts, k + 1, 1) &&
-      camera_project(&cam, su.p, &pr)) {
+  if ((connects || opts.technique == BIDIR_LT) && segments_allowed(params.max_depth, k + 1) && !delta &&
+      bidir_strategy_shown(&opts, k + 1, 1) && camera_project(&cam, su.p, &pr)) {
     float3 wc = -pr.dir, wc_local = frame_to_local(&frame, wc);
     float3 f = bsdf_eval_transport(&b, wo_local, wc_local, TRANSPORT_IMPORTANCE) *
                shading_normal_correction(wo, wc, su.ng, wo_local.z, wc_local.z);
     float w = 1.0f;
-    if (bdpt) {
+    if (connects) {
       float pdf_camera = camera_pdf_dir(&cam, pr.cos_theta) * fabs(dot(su.ng, wc)) / (pr.dist * pr.dist);
       float pdf_rev = bsdf_pdf(&b, wc_local, wo_local);
-      w = bidir_weight(&opts, mis_weight(mis_side(pdf_camera, st.dvcm, st.dvc, pdf_rev, opts.mis)));
+      w = bidir_weight(&opts, mis_weight(mis_side(pdf_camera, st.dvcm, st.dvc, pdf_rev, &opts)));
     }
     float3 c = beta * f * (w * pr.cos_theta * camera_we(&cam, pr.cos_theta) / (pr.dist * pr.dist));
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
@@ -184,7 +187,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     paths[slot] = st;
     return;
   }
-  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), opts.mis, &st);
+  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), &opts, &st);
   st.depth = k;
   vstore3(beta, 0, st.throughput);
   paths[slot] = st;
@@ -200,7 +203,7 @@ __kernel void bidir_camera_blocked(uint count, __global const GdrRay* shadow_ray
   if (!shadow_unoccluded(shadow_rays[k].tfar)) splat_drop(&splats[shadow_rays[k].id]);
 }
 
-// bdpt's camera subpaths of pixels [first_pixel, first_pixel + pixel_count): the ray, the state
+// The camera subpaths of bdpt, pm and vcm for pixels [first_pixel, first_pixel + pixel_count): the ray, the state
 // and the MIS sums of the camera vertex.
 __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
                             __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths) {
@@ -218,21 +221,23 @@ __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params
   st.sample = params.sample;
   st.depth = 0;
   st.stored = 0;
-  st.pad0 = 0;
   mis_camera_start(&cam, camera_cos_theta(&cam, r.d), opts.mis, &st);
   paths[i] = st;
 }
 
 // The weight of emission a camera subpath found (s = 0): 1 seen directly (no other strategy
-// reaches the pinhole), else against the light point's direct and emission pdfs.
+// reaches the pinhole), else against the light point's direct and emission pdfs. pm sees
+// emission only through delta scatterings (its merges find the rest).
 inline float bdpt_emission_weight(const GdrBidirOptions* o, const GdrBidirPathState* st, float direct,
                                   float emission) {
+  if (o->technique == BIDIR_PM) return (st->flags & BIDIR_PATH_ALL_SPECULAR) ? 1.0f : 0.0f;
   return st->depth == 0 ? 1.0f : bidir_weight(o, mis_emission_weight(direct, emission, st, o->mis));
 }
 
 // A camera subpath's new vertex: what it sees emitting (s = 0), its connection to a light point
-// (s = 1, a shadow ray with its value), its record for the connections to the light-vertex store
-// (camera_vertices[slot], the slot queued in `connectable`), and its continuation.
+// (s = 1, a shadow ray with its value), its record for the connections and merges with the
+// light-vertex store (camera_vertices[slot], the slot queued in `connectable`), and its
+// continuation.
 __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint count,
                                 __global const GdrRayHit* rays_in, __global const uint* queue_in,
                                 __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
@@ -288,14 +293,15 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   int light;
   LightSample ls;
   float3 wi_local;
-  if (bidir_strategy_shown(&opts, 1, t + 1) && nee_applies(&s, &b) &&
+  int connects = bidir_connects(&opts), merges = bidir_merges(&opts);
+  if (connects && bidir_strategy_shown(&opts, 1, t + 1) && nee_applies(&s, &b) &&
       nee_sample(&s, &ps, st.depth, &su, &frame, &light, &ls, &wi_local)) {
     float pdf_fwd = bsdf_pdf(&b, wo_local, wi_local), pdf_rev = bsdf_pdf(&b, wi_local, wo_local);
     float cos_z = fabs(dot(su.ng, ls.wi));
     float w_light = ls.delta ? 0.0f : mis_power_of(pdf_fwd / ls.pdf, opts.mis);
     float pdf_emit = light_emission_over_direct(&s, light, ls.light_normal, -ls.wi) * cos_z;
     if (!light_is_infinite(&s, light)) pdf_emit /= ls.dist * ls.dist;
-    float w_camera = mis_side(pdf_emit, st.dvcm, st.dvc, pdf_rev, opts.mis);
+    float w_camera = mis_side(pdf_emit, st.dvcm, st.dvc, pdf_rev, &opts);
     float w = bidir_weight(&opts, mis_weight(w_light + w_camera));
     float3 c = beta * bsdf_eval(&b, wo_local, wi_local) * ls.radiance * (w / ls.pdf);
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
@@ -306,8 +312,10 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     }
   }
 
-  // Open to the light subpath's stored vertices (s >= 2: at least one more segment each side).
-  if (!delta && segments_allowed(params.max_depth, t + 2)) {
+  // Open to connections with the light subpath's stored vertices (s >= 2: at least one more
+  // segment each side) and to merges with any light subpath's (at least one more).
+  if (!delta && ((connects && segments_allowed(params.max_depth, t + 2)) ||
+                 (merges && segments_allowed(params.max_depth, t + 1)))) {
     GdrBidirVertex v;
     v.prim = rh.hit.primID;
     v.u = rh.hit.u;
@@ -316,10 +324,13 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     vstore3(beta, 0, v.throughput);
     v.dvcm = st.dvcm;
     v.dvc = st.dvc;
+    v.dvm = st.dvm;
     v.depth = t;
     camera_vertices[slot] = v;
     connectable[atomic_inc(&counters[BIDIR_COUNTER_CONNECTABLE])] = slot;
   }
+  // pm's visible point is the first rough vertex: the subpath ends there.
+  if (opts.technique == BIDIR_PM && !delta) return;
 
   // BSDF sampling continues the subpath.
   BsdfSample bs;
@@ -329,7 +340,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
                                      TRANSPORT_RADIANCE, &b, &frame, su.ng, wo_local, &beta, &bs, &wi, &rr);
   if (next == PATH_ENDS_NONFINITE) atomic_inc(nonfinite);
   if (next != PATH_CONTINUES) return;
-  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), opts.mis, &st);
+  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), &opts, &st);
   st.depth = t;
   vstore3(beta, 0, st.throughput);
   paths[slot] = st;
@@ -380,12 +391,83 @@ __kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count,
   // Each side's vertex as the other side's BSDF would have drawn it (area pdfs).
   float pdf_z_fwd = bsdf_pdf(&bz, wo_z_local, dir_z_local), pdf_z_rev = bsdf_pdf(&bz, dir_z_local, wo_z_local);
   float pdf_y_fwd = bsdf_pdf(&by, wo_y_local, dir_y_local), pdf_y_rev = bsdf_pdf(&by, dir_y_local, wo_y_local);
-  float w_light = mis_side(pdf_z_fwd * fabs(dot(sy.ng, dir)) / dist2, y.dvcm, y.dvc, pdf_y_rev, opts.mis);
-  float w_camera = mis_side(pdf_y_fwd * fabs(dot(sz.ng, dir)) / dist2, z.dvcm, z.dvc, pdf_z_rev, opts.mis);
+  float w_light = mis_side(pdf_z_fwd * fabs(dot(sy.ng, dir)) / dist2, y.dvcm, y.dvc, pdf_y_rev, &opts);
+  float w_camera = mis_side(pdf_y_fwd * fabs(dot(sz.ng, dir)) / dist2, z.dvcm, z.dvc, pdf_z_rev, &opts);
   c *= bidir_weight(&opts, mis_weight(w_light + w_camera));
   if (!(max3(c) > 0.0f) || !finite_or_count(c, &counters[BIDIR_COUNTER_NONFINITE])) return;
   uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
   float3 to = leaving_origin(sy.p, sy.ng, -dir);
   write_segment_ray(&shadow_rays[k], sz.p, sz.ng, to, params.first_pixel + slot);
   shadow_values[k] = (float4)(c, 0.0f);
+}
+
+// Merging: the light vertices of the chunk's light subpaths within the radius of the camera
+// vertices queued in `connectable` (a density estimate, SmallVCM's RangeQuery), added to their
+// pixels. The grid (bidir/hash_grid.h) lists the store's entries by cell.
+__kernel void vcm_merge(GdrPtParams params, GdrBidirOptions opts, uint count, uint stride,
+                        __global const uint* connectable, __global const GdrBidirVertex* camera_vertices,
+                        __global const GdrBidirVertex* store, __global const float4* store_points,
+                        __global const uint* starts, __global const uint* sorted, uint buckets,
+                        __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  uint slot = connectable[q];
+  GdrBidirVertex z = camera_vertices[slot];
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  Surface sz = surface_at(&s, z.prim, z.u, z.v);
+  Bsdf bz = surface_bsdf(&s, &sz);
+  Frame fz = frame_from_normal(sz.ns);
+  float3 wo_z = vload3(0, z.wo), wo_z_local = frame_to_local(&fz, wo_z);
+  float r2 = opts.radius * opts.radius;
+  uint cells[8];
+  int ncells = hash_grid_query_cells(sz.p, opts.radius, buckets, cells);
+  float3 sum = (float3)(0.0f);
+  uint merged = 0;
+  for (int c = 0; c < ncells; ++c) {
+    for (uint i = starts[cells[c]], end = starts[cells[c] + 1]; i < end; ++i) {
+      uint e = sorted[i];
+      float3 d = store_points[e].xyz - sz.p;
+      if (dot(d, d) > r2) continue;
+      GdrBidirVertex y = store[e];
+      if (!segments_allowed(params.max_depth, y.depth + z.depth)) continue;
+      // The light arrives along the light vertex's incoming direction; the density estimate
+      // counts flux per area, so the BSDF's cosine gives way to the geometric one.
+      float3 wi = vload3(0, y.wo), wi_local = frame_to_local(&fz, wi);
+      float cos_g = fabs(dot(sz.ng, wi));
+      if (!sides_agree(wi, sz.ng, wi_local.z) || !(cos_g > 0.0f)) continue;
+      float3 f = bsdf_eval(&bz, wo_z_local, wi_local) / cos_g;
+      if (!(max3(f) > 0.0f)) continue;
+      float w = 1.0f;
+      if (opts.technique == BIDIR_VCM) {
+        float pdf_fwd = bsdf_pdf(&bz, wo_z_local, wi_local), pdf_rev = bsdf_pdf(&bz, wi_local, wo_z_local);
+        w = bidir_weight(&opts, mis_weight(mis_merge_side(y.dvcm, y.dvm, pdf_fwd, &opts) +
+                                           mis_merge_side(z.dvcm, z.dvm, pdf_rev, &opts)));
+      }
+      sum += f * vload3(0, y.throughput) * w;
+      ++merged;
+    }
+  }
+  if (merged == 0) return;
+  atomic_add(&counters[BIDIR_COUNTER_MERGES], merged);
+  film_add(film, params.first_pixel + slot, vload3(0, z.throughput) * sum * opts.vm_normalization,
+           &counters[BIDIR_COUNTER_NONFINITE]);
+}
+
+// The grid's keys: each light vertex of the store (entry j * stride + slot, j < the subpath's
+// stored count) gets its cell's bucket and its point; the other entries a key past the buckets.
+__kernel void vcm_grid_keys(GdrPtParams params, GdrBidirOptions opts, uint stride, uint entries,
+                            __global const GdrBidirPathState* light_paths, __global const GdrBidirVertex* store,
+                            uint buckets, __global uint* keys, __global float4* store_points, SCENE_DATA_ARGS) {
+  uint e = get_global_id(0);
+  if (e >= entries) return;
+  uint j = e / stride, slot = e % stride;
+  if (slot >= params.pixel_count || (int)j >= light_paths[slot].stored) {
+    keys[e] = 0xFFFFFFFFu;
+    return;
+  }
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  GdrBidirVertex y = store[e];
+  float3 p = surface_at(&s, y.prim, y.u, y.v).p;
+  store_points[e] = (float4)(p, 0.0f);
+  keys[e] = hash_grid_bucket(hash_grid_cell(p, opts.radius), buckets);
 }

@@ -1,9 +1,13 @@
 // Bidirectional MIS by running sums (SmallVCM, src/vertexcm.hxx; Georgiev, "Implementing Vertex
-// Connection and Merging", 2012). Each subpath carries dvcm and dvc: after its vertex i they
-// hold the sums over the strategies that could have drawn the subpath's vertices up to i from
-// the other end, each as a ratio of pdfs to the pdf of the strategy that did (in the heuristic's
-// power), so that a connection's weight needs only its two endpoints:
+// Connection and Merging", 2012). Each subpath carries dvcm, dvc and dvm: after its vertex i
+// they hold the sums over the strategies that could have drawn the subpath's vertices up to i
+// from the other end, each as a ratio of pdfs to the pdf of the strategy that did (in the
+// heuristic's power), so that a connection's or a merge's weight needs only its two endpoints:
 //   w = 1 / (1 + w_light + w_camera).
+// Merging enters through two factors (GdrBidirOptions): vm_factor = eta and vc_factor = 1 / eta
+// (in the heuristic's power), eta = pi r^2 N the ratio of a merge's density to a connection's, N
+// the light subpaths merged with; each is 0 where its technique is off, and the sums then are
+// bdpt's.
 //
 // Conventions of this engine:
 //   - Areas are measured with the geometric normal (|ng . w| converts a solid-angle pdf at one
@@ -21,12 +25,15 @@
 #include "shared/bidir_types.h"
 
 // A light subpath leaves the light of emission sample e.
-inline void mis_light_start(const SceneData* s, const EmissionSample* e, int mis, GdrBidirPathState* st) {
+inline void mis_light_start(const SceneData* s, const EmissionSample* e, const GdrBidirOptions* o,
+                            GdrBidirPathState* st) {
+  int mis = o->mis;
   float emission = e->pmf * e->pdf_pos * e->pdf_dir;
   int infinite = light_is_infinite(s, e->light);
   st->dvcm = mis_power_of(emission_direct_pdf(s, e) / emission, mis);
   float cos_light = infinite ? 1.0f : fabs(dot(e->n, e->dir));
   st->dvc = (e->delta_pos || e->delta_dir) ? 0.0f : mis_power_of(cos_light / emission, mis);
+  st->dvm = st->dvc * o->vc_factor;
   st->flags = infinite ? BIDIR_PATH_INFINITE : 0;
 }
 
@@ -35,7 +42,8 @@ inline void mis_camera_start(const GdrCamera* cam, float cos_theta, int mis, Gdr
   float pdf = camera_pdf_dir(cam, cos_theta);
   st->dvcm = pdf > 0.0f ? mis_power_of(1.0f / pdf, mis) : 0.0f;
   st->dvc = 0.0f;
-  st->flags = 0;
+  st->dvm = 0.0f;
+  st->flags = BIDIR_PATH_ALL_SPECULAR;
 }
 
 // The subpath reached its next vertex at distance dist, arriving at cos_in to the geometric
@@ -46,26 +54,40 @@ inline void mis_arrive(float dist, float cos_in, int mis, GdrBidirPathState* st)
   float c = mis_power_of(cos_in, mis);
   st->dvcm /= c;
   st->dvc /= c;
+  st->dvm /= c;
 }
 
 // The subpath scattered by BSDF sample bs, leaving at cos_out to the geometric normal; pdf_rev:
 // the BSDF's pdf of the way back (the sampled direction to the incoming one). A delta lobe
 // cannot be connected to: the sums skip the vertex (its forward and reverse lobe choices alike).
-inline void mis_scatter(const BsdfSample* bs, float pdf_rev, float cos_out, int mis, GdrBidirPathState* st) {
+inline void mis_scatter(const BsdfSample* bs, float pdf_rev, float cos_out, const GdrBidirOptions* o,
+                        GdrBidirPathState* st) {
+  int mis = o->mis;
   if (bs->delta) {
     st->dvcm = 0.0f;
     st->dvc *= mis_power_of(cos_out, mis);
+    st->dvm *= mis_power_of(cos_out, mis);
     return;
   }
-  st->dvc = mis_power_of(cos_out / bs->pdf, mis) * (st->dvc * mis_power_of(pdf_rev, mis) + st->dvcm);
+  st->flags &= ~BIDIR_PATH_ALL_SPECULAR;
+  float g = mis_power_of(cos_out / bs->pdf, mis), rev = mis_power_of(pdf_rev, mis);
+  st->dvc = g * (st->dvc * rev + st->dvcm + o->vm_factor);
+  st->dvm = g * (st->dvm * rev + st->dvcm * o->vc_factor + 1.0f);
   st->dvcm = mis_power_of(1.0f / bs->pdf, mis);
 }
 
 // What the sums say of the strategies on one side of a connection: the pdf with which the other
 // side's vertex would have drawn this vertex (area, pdf_area), and this vertex's BSDF pdf back
 // toward its own subpath given the connection's direction (pdf_rev).
-inline float mis_side(float pdf_area, float dvcm, float dvc, float pdf_rev, int mis) {
-  return mis_power_of(pdf_area, mis) * (dvcm + dvc * mis_power_of(pdf_rev, mis));
+inline float mis_side(float pdf_area, float dvcm, float dvc, float pdf_rev, const GdrBidirOptions* o) {
+  return mis_power_of(pdf_area, o->mis) * (o->vm_factor + dvcm + dvc * mis_power_of(pdf_rev, o->mis));
+}
+
+// What the sums say of the strategies on one side of a merge: the connections that could have
+// drawn the subpath (dvcm), and the merges at its other vertices, with the BSDF pdf at the merge
+// point toward this side's subpath (pdf).
+inline float mis_merge_side(float dvcm, float dvm, float pdf, const GdrBidirOptions* o) {
+  return dvcm * o->vc_factor + dvm * mis_power_of(pdf, o->mis);
 }
 
 // 1 / (1 + others), 0 where a degenerate pdf made the sum meaningless.
@@ -79,6 +101,11 @@ inline float mis_weight(float others) {
 inline float mis_emission_weight(float direct, float emission, const GdrBidirPathState* st, int mis) {
   return mis_weight(mis_power_of(direct, mis) * st->dvcm + mis_power_of(emission, mis) * st->dvc);
 }
+
+// The techniques a render combines: connections (bdpt, vcm; lt's camera connections are its
+// only strategy) and merging (pm, vcm).
+inline int bidir_connects(const GdrBidirOptions* o) { return o->technique == BIDIR_BDPT || o->technique == BIDIR_VCM; }
+inline int bidir_merges(const GdrBidirOptions* o) { return o->technique == BIDIR_PM || o->technique == BIDIR_VCM; }
 
 // The strategy (s light vertices, t camera vertices) is the one shown, or all are.
 inline int bidir_strategy_shown(const GdrBidirOptions* o, int s, int t) {

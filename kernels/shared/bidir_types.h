@@ -1,24 +1,32 @@
-// State of the bidirectional integrator (`lt`, `bdpt`), shared by its kernels and the host loop.
+// State of the bidirectional integrator (`lt`, `bdpt`, `pm`, `vcm`), shared by its kernels and the
+// host loop.
 #pragma once
 #include "shared/counters.h"
 
 // The techniques one render combines (GdrBidirOptions.technique).
 #define BIDIR_LT 0    // light subpaths to the camera, emission seen directly: nothing to weigh
 #define BIDIR_BDPT 1  // every connection of a camera and a light subpath, weighted by MIS
+#define BIDIR_PM 2    // progressive photon mapping: merging at the first rough camera vertex only
+#define BIDIR_VCM 3   // bdpt's connections and merging at every rough camera vertex, weighted by MIS
 
 #define BIDIR_MIS_BALANCE 1
 #define BIDIR_MIS_POWER 2
 
-// Per-render options of the kernels.
+// Per-render options of the kernels (the merging ones set per chunk: the radius shrinks by pass).
 typedef struct GdrBidirOptions {
   int technique;   // BIDIR_*
-  int mis;         // BIDIR_MIS_* (bdpt)
+  int mis;         // BIDIR_MIS_* (bdpt, vcm)
   int strategy_s;  // >= 0: only the strategy with s light and t camera vertices, unweighted
   int strategy_t;
+  float radius;            // merging radius of this pass
+  float vm_normalization;  // 1 / (pi r^2 N): N light subpaths merged with
+  float vm_factor;         // MIS weight factor of merging against connections (0 without merging)
+  float vc_factor;         // of connections against merging (0 without connections)
 } GdrBidirOptions;
 
 #define BIDIR_PATH_SPECULAR 1  // the last scattering sampled a delta lobe
 #define BIDIR_PATH_INFINITE 2  // a light subpath from a light at infinity (its first segment has no length)
+#define BIDIR_PATH_ALL_SPECULAR 4  // a camera subpath with delta scatterings only so far (pm's emission)
 
 // A camera or light subpath between bounces. dvcm and dvc are the running MIS sums of SmallVCM
 // (Georgiev et al. 2012, "Implementing Vertex Connection and Merging"): with them a vertex knows
@@ -26,13 +34,12 @@ typedef struct GdrBidirOptions {
 typedef struct GdrBidirPathState {
   float throughput[3];
   float rr_scale;        // largest component of the first throughput (Russian roulette's unit)
-  float dvcm, dvc;
+  float dvcm, dvc, dvm;
   unsigned int index;    // camera: the pixel; light: the subpath's index in its pass
   unsigned int sample;   // the pass
   int depth;             // scattering vertices so far (0: leaving the light or the camera)
   int stored;            // light subpaths: vertices written to the light-vertex store
   int flags;             // BIDIR_PATH_*
-  int pad0;
 } GdrBidirPathState;
 
 // A subpath vertex on a non-delta surface, kept for connections: the surface is found again from
@@ -42,7 +49,7 @@ typedef struct GdrBidirVertex {
   float u, v;
   float wo[3];
   float throughput[3];
-  float dvcm, dvc;
+  float dvcm, dvc, dvm;
   int depth;  // scattering vertices up to and including this one
 } GdrBidirVertex;
 
@@ -56,5 +63,6 @@ typedef struct GdrBidirVertex {
   X(BIDIR_COUNTER_LIGHT_VERTICES, "bidir/light_vertices")   /* vertices kept for connections */         \
   X(BIDIR_COUNTER_CONNECTIONS, "bidir/connections")         /* camera-light vertex connections tried */ \
   X(BIDIR_COUNTER_NEE, "bidir/light_connections")           /* camera vertices connected to a light */  \
+  X(BIDIR_COUNTER_MERGES, "bidir/merges")                   /* light vertices merged with */            \
   X(BIDIR_COUNTER_NONFINITE, "samples/nonfinite_rejected")  /* NaN or Inf contributions dropped */
 enum { BIDIR_COUNTERS(GDR_COUNTER_ENUM) BIDIR_COUNTER_COUNT };

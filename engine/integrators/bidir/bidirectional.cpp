@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include "render/radiance_render.h"
 #include "render/wavefront/chunks.h"
@@ -47,6 +48,32 @@ void parse_strategy(const std::string& text, GdrBidirOptions* o) {
 
 const std::vector<std::string> kLtParams = {"aux"};
 const std::vector<std::string> kBdptParams = {"aux", "mis", "strategy"};
+const std::vector<std::string> kPmParams = {"aux", "radius", "radius_alpha"};
+const std::vector<std::string> kVcmParams = {"aux", "mis", "radius", "radius_alpha"};
+
+namespace {
+
+int mis_param(const IntegratorParams& params) {
+  return params.choice("mis", "power", {"power", "balance"}) == "balance" ? BIDIR_MIS_BALANCE : BIDIR_MIS_POWER;
+}
+
+BidirSettings merging_settings(int technique, const IntegratorParams& params) {
+  BidirSettings s;
+  s.options.technique = technique;
+  if (technique == BIDIR_VCM) s.options.mis = mis_param(params);
+  if (params.has("radius")) {
+    s.radius = params.non_negative("radius", 0.0f);
+    if (!(s.radius > 0.0f)) throw Error("integrator parameter radius: must be above 0");
+  }
+  s.radius_alpha = params.non_negative("radius_alpha", 0.75f);
+  if (!(s.radius_alpha > 0.0f) || s.radius_alpha > 1.0f) {
+    throw Error("integrator parameter radius_alpha: must lie in (0, 1]");
+  }
+  s.aux = params.flag("aux", false);
+  return s;
+}
+
+}  // namespace
 
 BidirSettings lt_settings(const IntegratorParams& params) {
   BidirSettings s;
@@ -58,11 +85,14 @@ BidirSettings lt_settings(const IntegratorParams& params) {
 BidirSettings bdpt_settings(const IntegratorParams& params) {
   BidirSettings s;
   s.options.technique = BIDIR_BDPT;
-  s.options.mis = params.choice("mis", "power", {"power", "balance"}) == "balance" ? BIDIR_MIS_BALANCE : BIDIR_MIS_POWER;
+  s.options.mis = mis_param(params);
   if (params.has("strategy")) parse_strategy(params.values().at("strategy"), &s.options);
   s.aux = params.flag("aux", false);
   return s;
 }
+
+BidirSettings pm_settings(const IntegratorParams& params) { return merging_settings(BIDIR_PM, params); }
+BidirSettings vcm_settings(const IntegratorParams& params) { return merging_settings(BIDIR_VCM, params); }
 
 Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settings)
     : in_(in),
@@ -77,24 +107,55 @@ Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settin
       camera_shade_(kernels_.make(kProgram, "bdpt_camera_shade")),
       connect_(kernels_.make(kProgram, "bdpt_connect")),
       shadow_add_(kernels_.make(kProgram, "path_shadow_add")),
+      grid_keys_(kernels_.make(kProgram, "vcm_grid_keys")),
+      merge_(kernels_.make(kProgram, "vcm_merge")),
+      options_(settings.options),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
-      store_vertices_(bdpt() ? kBdptMaxSegments - 2 : 0),
+      store_vertices_(lt() ? 0 : kBdptMaxSegments - 1),
+      scene_radius_(0.5f * std::sqrt(std::pow(in.scene.bounds_max[0] - in.scene.bounds_min[0], 2.0f) +
+                                     std::pow(in.scene.bounds_max[1] - in.scene.bounds_min[1], 2.0f) +
+                                     std::pow(in.scene.bounds_max[2] - in.scene.bounds_min[2], 2.0f))),
       queues_(in.context, capacity_, true),
       light_paths_(in.context, capacity_),
-      camera_paths_(in.context, bdpt() ? capacity_ : 0),
+      camera_paths_(in.context, lt() ? 0 : capacity_),
       store_(in.context, capacity_ * size_t(store_vertices_)),
-      camera_vertices_(in.context, bdpt() ? capacity_ : 0),
-      connectable_(in.context, bdpt() ? capacity_ : 0),
+      camera_vertices_(in.context, lt() ? 0 : capacity_),
+      connectable_(in.context, lt() ? 0 : capacity_),
       shadow_rays_(in.context, capacity_, kRayQueueFlags),
-      shadow_values_(in.context, bdpt() ? capacity_ : 0),
+      shadow_values_(in.context, lt() ? 0 : capacity_),
       counters_(in.context, GDR_COUNTER_NAMES(BIDIR_COUNTERS)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
       splats_(in.context, kernels_, kProgram, capacity_) {
   if (settings_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
+  if (merges()) {
+    const size_t entries = capacity_ * size_t(store_vertices_);
+    primitives_.emplace(in.context);
+    grid_keys_buffer_ = Buffer<cl_uint>(in.context, entries);
+    grid_starts_ = Buffer<cl_uint>(in.context, entries + 1);
+    grid_sorted_ = Buffer<cl_uint>(in.context, entries);
+    store_points_ = Buffer<Vec4>(in.context, entries);
+  }
+}
+
+GdrBidirOptions Bidirectional::pass_options(uint32_t sample, uint32_t light_subpaths) const {
+  GdrBidirOptions o = settings_.options;
+  if (!merges()) return o;
+  const int width = in_.scene.camera.width, height = in_.scene.camera.height;
+  const float r0 = (settings_.radius > 0 ? settings_.radius : 1.5f / float(std::max(width, height))) *
+                   (scene_radius_ > 0 ? scene_radius_ : 1.0f);
+  o.radius = r0 * std::pow(float(sample) + 1.0f, 0.5f * (settings_.radius_alpha - 1.0f));
+  const double eta = M_PI * double(o.radius) * o.radius * light_subpaths;
+  o.vm_normalization = float(1.0 / eta);
+  if (technique() == BIDIR_VCM) {
+    const double m = o.mis == BIDIR_MIS_POWER ? eta * eta : eta;
+    o.vm_factor = float(m);
+    o.vc_factor = float(1.0 / m);
+  }
+  return o;
 }
 
 void Bidirectional::trace_light_subpaths(const GdrPtParams& p) {
-  const GdrBidirOptions& o = settings_.options;
+  const GdrBidirOptions& o = options_;
   counters_.reset();
   emit_.args(p, o, queues_.rays[0], queues_.slots[0], light_paths_, counters_.buffer(), in_.device_scene)
       .run(p.pixel_count);
@@ -109,6 +170,7 @@ void Bidirectional::trace_light_subpaths(const GdrPtParams& p) {
         .run(active);
     counters_.read();
     if (counters_[BIDIR_COUNTER_LIGHT_VERTICES] > 0) ++stored_bound_;
+    stored_ += counters_[BIDIR_COUNTER_LIGHT_VERTICES];
     cl_uint shadows = counters_[BIDIR_COUNTER_SHADOW_RAYS];
     if (shadows > 0) {
       occlude(in_.embree, shadow_rays_, shadows, "camera_connection");
@@ -142,7 +204,7 @@ void Bidirectional::connect(const GdrPtParams& p, int camera_depth, cl_uint conn
   for (int j = 0; j < last; ++j) {
     counters_.reset();
     connect_
-        .args(p, settings_.options, connectable, cl_uint(j), cl_uint(capacity_), connectable_, camera_vertices_,
+        .args(p, options_, connectable, cl_uint(j), cl_uint(capacity_), connectable_, camera_vertices_,
               light_paths_, store_, shadow_rays_, shadow_values_, counters_.buffer(), in_.device_scene)
         .run(connectable);
     counters_.read();
@@ -150,8 +212,28 @@ void Bidirectional::connect(const GdrPtParams& p, int camera_depth, cl_uint conn
   }
 }
 
+void Bidirectional::build_grid(const GdrPtParams& p) {
+  ScopedTimer timer(in_.context.stats(), "render/grid_build");
+  const size_t entries = capacity_ * size_t(stored_bound_);
+  grid_buckets_ = std::max<cl_uint>(1, stored_);
+  grid_keys_
+      .args(p, options_, cl_uint(capacity_), cl_uint(entries), light_paths_, store_, grid_buckets_, grid_keys_buffer_,
+            store_points_, in_.device_scene)
+      .run(entries);
+  primitives_->sort_by_key(grid_keys_buffer_, entries, grid_buckets_, grid_starts_, grid_sorted_);
+}
+
+void Bidirectional::merge(const GdrPtParams& p, cl_uint connectable) {
+  counters_.reset();
+  merge_
+      .args(p, options_, connectable, cl_uint(capacity_), connectable_, camera_vertices_, store_, store_points_,
+            grid_starts_, grid_sorted_, grid_buckets_, film_["radiance"], counters_.buffer(), in_.device_scene)
+      .run(connectable);
+  counters_.read();
+}
+
 void Bidirectional::trace_camera_subpaths(const GdrPtParams& p) {
-  const GdrBidirOptions& o = settings_.options;
+  const GdrBidirOptions& o = options_;
   generate_.args(in_.device_scene.camera(), p, o, queues_.rays[0], queues_.slots[0], camera_paths_).run(p.pixel_count);
   cl_uint active = p.pixel_count;
   for (int depth = 0, cur = 0; active > 0; ++depth, cur = 1 - cur) {
@@ -167,17 +249,21 @@ void Bidirectional::trace_camera_subpaths(const GdrPtParams& p) {
     cl_uint connectable = counters_[BIDIR_COUNTER_CONNECTABLE];
     active = counters_[BIDIR_COUNTER_NEXT_RAYS];
     add_shadows(counters_[BIDIR_COUNTER_SHADOW_RAYS], "shadow");
-    if (connectable > 0) connect(p, depth + 1, connectable);
+    if (connectable > 0 && connects()) connect(p, depth + 1, connectable);
+    if (connectable > 0 && merges() && stored_ > 0) merge(p, connectable);
   }
 }
 
 void Bidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
   GdrPtParams p = in_.device_scene.path_params(settings, sample, first, count);
   bool light = light_subpaths_allowed(settings.max_depth) && p.light_count > 0;
-  if (bdpt()) {
+  options_ = pass_options(sample, count);
+  if (!lt()) {
     p.max_depth = bdpt_segments(settings.max_depth);
     stored_bound_ = 0;
+    stored_ = 0;
     if (light) trace_light_subpaths(p);
+    if (merges() && stored_ > 0) build_grid(p);
     trace_camera_subpaths(p);
   } else {
     if (p.max_depth != 0) trace_direct(p);
@@ -187,8 +273,8 @@ void Bidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample,
 }
 
 RenderResult Bidirectional::render(const RenderSettings& settings) {
-  if (bdpt() && bdpt_segments(settings.max_depth) != settings.max_depth) {
-    log::warn("bdpt renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
+  if (!lt() && bdpt_segments(settings.max_depth) != settings.max_depth) {
+    log::warn("bdpt, pm and vcm render paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
               " asked for more): the light-vertex store's bound");
   }
   return render_radiance(in_.context, settings, film_, aux_, capacity_, [&](uint32_t sample, uint32_t first, uint32_t count) {
