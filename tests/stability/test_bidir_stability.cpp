@@ -1,4 +1,4 @@
-// The bidirectional integrator (lt and bdpt) stays finite where its new paths meet the edge
+// The bidirectional integrator (lt, bdpt, pm and vcm) stays finite where its new paths meet the edge
 // cases: every project scene, and lights that cannot emit (a zero-area triangle) beside a point
 // light (a delta position, connected to the camera through one scattering vertex and, under
 // bdpt, to camera vertices). The renders use a context of their own with stats, so the kernels'
@@ -24,7 +24,6 @@ struct BidirRun {
   Stats stats;
 };
 
-const BidirSettings kLt = lt_settings(IntegratorParams{}), kBdpt = bdpt_settings(IntegratorParams{});
 
 // `settings` on `scene` (4 spp, seed 402) on a context that records stats.
 void render_bidir(const Scene& scene, int max_depth, const BidirSettings& settings, BidirRun* out) {
@@ -39,10 +38,18 @@ void render_bidir(const Scene& scene, int max_depth, const BidirSettings& settin
   out->rgb = lt.render(s).image.rgb_layer("");
 }
 
-class BidirStability : public ::testing::TestWithParam<bool> {
+class BidirStability : public ::testing::TestWithParam<int> {
  protected:
-  bool bdpt() const { return GetParam(); }
-  const BidirSettings& settings() const { return bdpt() ? kBdpt : kLt; }
+  int technique() const { return GetParam(); }
+  BidirSettings settings() const {
+    IntegratorParams none;
+    switch (technique()) {
+      case BIDIR_BDPT: return bdpt_settings(none);
+      case BIDIR_PM: return pm_settings(none);
+      case BIDIR_VCM: return vcm_settings(none);
+      default: return lt_settings(none);
+    }
+  }
 };
 
 TEST_P(BidirStability, ProjectScenesAreFinite) {
@@ -59,12 +66,13 @@ TEST_P(BidirStability, ProjectScenesAreFinite) {
     EXPECT_TRUE(all_finite(r.rgb)) << entry.path();
     EXPECT_EQ(r.stats.count("samples/nonfinite_rejected"), 0u) << entry.path();
     EXPECT_GT(r.stats.count("bidir/light_subpaths"), 0u) << entry.path();
-    EXPECT_GT(r.stats.count("bidir/camera_connections"), 0u) << entry.path();
-    if (bdpt()) {
-      EXPECT_GT(r.stats.count("bidir/light_vertices"), 0u) << entry.path();
+    if (technique() != BIDIR_PM) EXPECT_GT(r.stats.count("bidir/camera_connections"), 0u) << entry.path();
+    if (technique() != BIDIR_LT) EXPECT_GT(r.stats.count("bidir/light_vertices"), 0u) << entry.path();
+    if (technique() == BIDIR_BDPT || technique() == BIDIR_VCM) {
       EXPECT_GT(r.stats.count("bidir/connections"), 0u) << entry.path();
       EXPECT_GT(r.stats.count("bidir/light_connections"), 0u) << entry.path();
     }
+    if (technique() == BIDIR_PM || technique() == BIDIR_VCM) EXPECT_GT(r.stats.count("bidir/merges"), 0u) << entry.path();
     double sum = 0;
     for (float v : r.rgb) sum += v;
     EXPECT_GT(sum, 0.0) << entry.path() << " rendered black";
@@ -104,8 +112,13 @@ TEST_P(BidirStability, ZeroAreaLightAndPointLight) {
   EXPECT_EQ(r.stats.count("bidir/light_subpaths"), uint64_t(16 * 16 * 4));
 }
 
-INSTANTIATE_TEST_SUITE_P(Techniques, BidirStability, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "bdpt" : "lt"; });
+std::string technique_name(const ::testing::TestParamInfo<int>& i) {
+  static const char* const kNames[] = {"lt", "bdpt", "pm", "vcm"};
+  return kNames[i.param];
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, BidirStability, ::testing::Values(BIDIR_LT, BIDIR_BDPT, BIDIR_PM, BIDIR_VCM),
+                         technique_name);
 
 }  // namespace
 }  // namespace gdr::test
