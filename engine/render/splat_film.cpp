@@ -1,27 +1,26 @@
 #include "render/splat_film.h"
 
-#include <algorithm>
-
 static_assert(sizeof(GdrSplat) == 32, "GdrSplat layout changed");
 
 namespace gdr {
-namespace {
-
-// Bands of rows gathered in parallel: each work item reads every slot, so more bands cost reads
-// and fewer leave cores idle; 32 keeps a 16-core device busy at a few reads per slot and pixel.
-constexpr cl_uint kDefaultBands = 32;
-
-}  // namespace
 
 SplatFilm::SplatFilm(Context& ctx, const KernelFactory& kernels, const std::string& program, size_t slots)
-    : gather_(kernels.make(program, "path_splat_gather")), slots_(ctx, slots) {
+    : ctx_(ctx),
+      keys_(kernels.make(program, "path_splat_keys")),
+      gather_(kernels.make(program, "path_splat_gather")),
+      primitives_(ctx),
+      slots_(ctx, slots),
+      keys_buffer_(ctx, slots),
+      sorted_(ctx, slots) {
   slots_.fill(GdrSplat{});
 }
 
-void SplatFilm::gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film, cl_uint bands) {
-  if (count == 0) return;
-  if (bands == 0) bands = std::min<cl_uint>(kDefaultBands, cl_uint(std::max(height, 1)));
-  gather_.args(camera, count, bands, slots_, film).run(bands);
+void SplatFilm::gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film) {
+  if (count == 0 || height <= 0) return;
+  if (starts_.size() < size_t(height) + 1) starts_ = Buffer<cl_uint>(ctx_, size_t(height) + 1);
+  keys_.args(camera, count, slots_, keys_buffer_).run(count);
+  primitives_.sort_by_key(keys_buffer_, count, cl_uint(height), starts_, sorted_);
+  gather_.args(camera, starts_, sorted_, slots_, film).run(size_t(height));
   slots_.fill(GdrSplat{});
 }
 

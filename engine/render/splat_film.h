@@ -1,13 +1,15 @@
 // The splat film: contributions to any pixel (light subpaths seen by the camera), gathered into a
 // film layer deterministically: same seed, same image, on every run and device. Each path writes
 // its contribution of a step into its own slot (kernels/path/splat.h: splat_write); gather()
-// then adds the slots in slot order into the pixels their filter covers (each pixel owned by one
-// work item, no atomics) and empties the slots for the next step.
+// then sorts the slots by film row (render/wavefront/primitives.h) and adds them into the pixels
+// their filter covers (each row owned by one work item, no atomics), and empties the slots for
+// the next step.
 #pragma once
 #include <string>
 
 #include "device/context.h"
 #include "render/wavefront/kernel_factory.h"
+#include "render/wavefront/primitives.h"
 #include "scene/scene.h"
 #include "shared/splat_types.h"
 
@@ -20,13 +22,16 @@ class SplatFilm {
 
   Buffer<GdrSplat>& slots() { return slots_; }  // the kernels' `splats` argument
 
-  // Adds slots [0, count) into `film` (a film layer of the camera's size) and empties them.
-  // `bands`: rows are split into this many work items (the image does not depend on it).
-  void gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film, cl_uint bands = 0);
+  // Adds slots [0, count) into `film` (a film layer of the camera's size, `height` rows) and
+  // empties them.
+  void gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film);
 
  private:
-  Kernel gather_;
+  Context& ctx_;
+  Kernel keys_, gather_;
+  DevicePrimitives primitives_;
   Buffer<GdrSplat> slots_;
+  Buffer<cl_uint> keys_buffer_, starts_, sorted_;
 };
 
 }  // namespace gdr
