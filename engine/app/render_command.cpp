@@ -16,6 +16,7 @@
 #include "render/device_scene.h"
 #include "render/progressive_loop.h"
 #include "scene/load_scene.h"
+#include "stats/memory.h"
 #include "stats/stats.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -184,6 +185,7 @@ int render_command(const Options& o) {
   // The passes alone (render/seconds of a gradient render includes its reconstruction): the
   // throughput that more ranks raise.
   stats.set("render/loop_seconds", last_loop_times().seconds);
+  stats.set("memory/peak_resident_bytes", peak_resident_bytes());
   if (cluster::distributed()) add_rank_stats(stats, device, result);
   if (!cluster::root()) return 0;
   // The images and the stats are written as one set: temporaries first, then renamed together.

@@ -1,17 +1,21 @@
-// The bidirectional integrator: light tracing (`lt`) and bidirectional path tracing (`bdpt`) as
-// one algorithm, SmallVCM's (src/vertexcm.hxx), with the host tracing every ray with Embree
-// between the kernels.
+// The bidirectional integrator: light tracing (`lt`), bidirectional path tracing (`bdpt`),
+// progressive photon mapping (`pm`) and vertex connection and merging (`vcm`) as one algorithm,
+// SmallVCM's (src/vertexcm.hxx), with the host tracing every ray with Embree between the kernels.
 //
 // Light subpaths start at the lights (emission sampling) and scatter by importance transport;
-// every vertex on a non-delta surface is connected to the camera and splatted (t = 1), and under
-// bdpt also kept in the light-vertex store. lt adds the emission the camera sees directly with one
-// camera ray per pixel (a light subpath cannot reach the pinhole by itself). bdpt instead traces
-// a camera subpath per pixel whose every vertex adds what it finds emitting (s = 0), connects to a
-// light point (s = 1) and to each stored vertex of its pixel's light subpath (s >= 2), every
-// strategy weighted by MIS from the running sums of bidir/subpath_mis.h.
+// every vertex on a non-delta surface is connected to the camera and splatted (t = 1; not by
+// pm), and but for lt also kept in the light-vertex store. lt adds the emission the camera sees
+// directly with one camera ray per pixel (a light subpath cannot reach the pinhole by itself).
+// The others trace a camera subpath per pixel instead, whose vertices add what they find
+// emitting (s = 0); under bdpt and vcm each rough vertex connects to a light point (s = 1) and to
+// each stored vertex of its pixel's light subpath (s >= 2); under pm and vcm it merges with the
+// stored vertices of every light subpath of the chunk within the radius (pm: at the first rough
+// vertex only, where the subpath ends). bdpt and vcm weight every strategy by MIS from the
+// running sums of bidir/subpath_mis.h.
 //
 // Path lengths follow Mitsuba's max_depth (segments): a strategy with s light and t camera
-// vertices makes a path of s + t - 1 segments; emission seen directly is one segment.
+// vertices makes a path of s + t - 1 segments; emission seen directly is one segment; a merge of
+// light vertex k bounces from its light at camera vertex t segments from the camera, k + t.
 #include "camera/importance.h"
 #include "light/emission.h"
 #include "path/aux.h"
@@ -22,10 +26,10 @@
 #include "path/scene.h"
 #include "path/shadow.h"
 #include "path/spawn.h"
+#include "path/nee.h"
 #include "path/splat.h"
 #include "bidir/hash_grid.h"
 #include "bidir/subpath_mis.h"
-#include "path/nee.h"
 #include "shared/bidir_types.h"
 #include "shared/ray_types.h"
 

@@ -8,7 +8,7 @@
 
 inline int4 hash_grid_cell(float3 p, float radius) {
   float3 c = floor(p / (2.0f * radius));
-  return (int4)((int)c.x, (int)c.y, (int)c.z, 0);
+  return (int4)(convert_int_sat(c.x), convert_int_sat(c.y), convert_int_sat(c.z), 0);
 }
 
 inline uint hash_grid_bucket(int4 c, uint buckets) {
@@ -19,7 +19,7 @@ inline uint hash_grid_bucket(int4 c, uint buckets) {
 // The buckets to visit for a query at p; returns their count (at most 8, distinct).
 inline int hash_grid_query_cells(float3 p, float radius, uint buckets, uint* out) {
   float3 g = p / (2.0f * radius), f = floor(g);
-  int4 c = (int4)((int)f.x, (int)f.y, (int)f.z, 0);
+  int4 c = (int4)(convert_int_sat(f.x), convert_int_sat(f.y), convert_int_sat(f.z), 0);
   float3 frac = g - f;
   int4 o = (int4)(frac.x < 0.5f ? -1 : 1, frac.y < 0.5f ? -1 : 1, frac.z < 0.5f ? -1 : 1, 0);
   int n = 0;

@@ -24,7 +24,6 @@ typedef struct GdrBidirOptions {
   float vc_factor;         // of connections against merging (0 without connections)
 } GdrBidirOptions;
 
-#define BIDIR_PATH_SPECULAR 1  // the last scattering sampled a delta lobe
 #define BIDIR_PATH_INFINITE 2  // a light subpath from a light at infinity (its first segment has no length)
 #define BIDIR_PATH_ALL_SPECULAR 4  // a camera subpath with delta scatterings only so far (pm's emission)
 
