@@ -36,6 +36,22 @@
 // Mitsuba's max_depth allows `segments` path segments (< 0: unbounded).
 inline int segments_allowed(int max_depth, int segments) { return max_depth < 0 || segments <= max_depth; }
 
+// A subpath's vertex as kept for connections and merges: its hit, the direction back along its
+// subpath, its throughput and MIS sums, its depth.
+inline GdrBidirVertex bidir_vertex(const GdrHit* hit, float3 wo, float3 beta, const GdrBidirPathState* st, int depth) {
+  GdrBidirVertex v;
+  v.prim = hit->primID;
+  v.u = hit->u;
+  v.v = hit->v;
+  vstore3(wo, 0, v.wo);
+  vstore3(beta, 0, v.throughput);
+  v.dvcm = st->dvcm;
+  v.dvc = st->dvc;
+  v.dvm = st->dvm;
+  v.depth = depth;
+  return v;
+}
+
 // Camera rays of pixels [first_pixel, first_pixel + pixel_count), for the emission seen directly.
 __kernel void lt_camera(__global const GdrCamera* camera, GdrPtParams params, __global GdrRayHit* rays) {
   uint i = get_global_id(0);
@@ -137,17 +153,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   // for merging (a camera vertex, one more).
   if (!delta && ((connects && segments_allowed(params.max_depth, k + 2)) ||
                  (bidir_merges(&opts) && segments_allowed(params.max_depth, k + 1)))) {
-    GdrBidirVertex v;
-    v.prim = rh.hit.primID;
-    v.u = rh.hit.u;
-    v.v = rh.hit.v;
-    vstore3(wo, 0, v.wo);
-    vstore3(beta, 0, v.throughput);
-    v.dvcm = st.dvcm;
-    v.dvc = st.dvc;
-    v.dvm = st.dvm;
-    v.depth = k;
-    store[(uint)st.stored * stride + slot] = v;
+    store[(uint)st.stored * stride + slot] = bidir_vertex(&rh.hit, wo, beta, &st, k);
     st.stored += 1;
     atomic_inc(&counters[BIDIR_COUNTER_LIGHT_VERTICES]);
   }
@@ -320,17 +326,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   // segment each side) and to merges with any light subpath's (at least one more).
   if (!delta && ((connects && segments_allowed(params.max_depth, t + 2)) ||
                  (merges && segments_allowed(params.max_depth, t + 1)))) {
-    GdrBidirVertex v;
-    v.prim = rh.hit.primID;
-    v.u = rh.hit.u;
-    v.v = rh.hit.v;
-    vstore3(wo, 0, v.wo);
-    vstore3(beta, 0, v.throughput);
-    v.dvcm = st.dvcm;
-    v.dvc = st.dvc;
-    v.dvm = st.dvm;
-    v.depth = t;
-    camera_vertices[slot] = v;
+    camera_vertices[slot] = bidir_vertex(&rh.hit, wo, beta, &st, t);
     connectable[atomic_inc(&counters[BIDIR_COUNTER_CONNECTABLE])] = slot;
   }
   // pm's visible point is the first rough vertex: the subpath ends there.

@@ -84,12 +84,7 @@ TEST_P(BidirStability, ProjectScenesAreFinite) {
 // triangle starts no light subpath, the point light's do, and every pixel is finite.
 TEST_P(BidirStability, ZeroAreaLightAndPointLight) {
   SceneBuilder b;
-  GdrMaterial m{};
-  m.type = BSDF_DIFFUSE;
-  m.reflectance_texture = -1;
-  m.coating_table = -1;
-  m.reflectance[0] = m.reflectance[1] = m.reflectance[2] = 0.5f;
-  int wall = b.material(m, "wall");
+  int wall = b.material(diffuse_material(0.5f), "wall");
   b.shape(quad_mesh({-5, -5, 10}, {-5, 5, 10}, {5, 5, 10}, {5, -5, 10}), wall, 0.0f, "wall");
   b.shape(triangle_mesh({0, 0, 8}, {1, 1, 8}, {2, 2, 8}), wall, 10.0f, "zero-area light");
   GdrLight point{};

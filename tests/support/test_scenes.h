@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "bsdf/bsdf_harness.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "scene/scene_features.h"
@@ -212,12 +213,7 @@ inline void scale_scene(Scene& scene, float s) {
 // ~40 degrees (what light subpaths need the shading-normal correction for).
 inline Scene coarse_smooth_sphere_scene() {
   SceneBuilder b;
-  GdrMaterial m{};
-  m.type = BSDF_DIFFUSE;
-  m.reflectance_texture = -1;
-  m.coating_table = -1;
-  m.reflectance[0] = m.reflectance[1] = m.reflectance[2] = 0.7f;
-  int white = b.material(m, "white");
+  int white = b.material(diffuse_material(0.7f), "white");
   MeshData sphere = make_sphere(4, 8);
   for (size_t v = 0; v < sphere.vertex_count(); ++v) sphere.positions[3 * v + 2] += 3.0f;
   b.shape(sphere, white, 0.0f, "sphere");
