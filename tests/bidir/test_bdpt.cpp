@@ -1,11 +1,10 @@
 // Bidirectional path tracing (`bdpt`) converges to the path tracer's image, with either
 // heuristic, on a diffuse, a glossy and a specular scene; each strategy rendered alone gives the
-// paths of its length; the image is the same for the same seed. The comparisons are per 4 x 4
-// block Welch t-tests over 16 independent runs of each (bdpt seeds 1..16, pt seeds 101..116),
-// each at a family false-positive rate of 1e-3 over its blocks (support/agreement.h).
+// paths of its length; the white furnace holds. The comparisons are per 4 x 4 block (and whole
+// image) Welch t-tests over 16 independent runs of each (bdpt seeds 1..16, pt seeds 101..116),
+// each at a family false-positive rate of 1e-3 (support/agreement.h). What bdpt shares with the
+// other techniques (max_depth 1 and 0, same seed same image) is in test_bidir_techniques.cpp.
 #include <gtest/gtest.h>
-
-#include <cstring>
 
 #include "integrators/bidir/bidirectional.h"
 #include "scene/load_scene.h"
@@ -87,40 +86,6 @@ TEST(Bdpt, EachStrategyAloneGivesThePathsOfItsLength) {
     test::expect_blocks_agree(test::block_means(one, w, h, 8, k, 1, kRuns), longer,
                               "cornell-box.xml, strategy " + st, "bdpt", "pt (paths of 3 segments)");
   }
-}
-
-// max_depth 1 is the emission seen directly, which only the camera subpath's first vertex finds
-// (weight 1): pt's image bit for bit. max_depth 0 renders nothing.
-TEST(Bdpt, DirectlyVisibleEmissionIsPtsFirstSegment) {
-  Scene scene = project_scene("cornell-box.xml", 32);
-  test::SceneOnDevice on_device(scene);
-  Bidirectional bdpt(on_device.inputs(), bdpt_with({}));
-  PathTracer pt(on_device.inputs(), PtSettings{});
-  RenderSettings s;
-  s.spp = 4;
-  s.seed = 3;
-  s.max_depth = 1;
-  std::vector<float> a = bdpt.render(s).image.rgb_layer(""), b = pt.render(s).image.rgb_layer("");
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(float)));
-  EXPECT_GT(*std::max_element(a.begin(), a.end()), 0.0f) << "the light is not in view";
-  s.max_depth = 0;
-  std::vector<float> none = bdpt.render(s).image.rgb_layer("");
-  EXPECT_EQ(*std::max_element(none.begin(), none.end()), 0.0f);
-}
-
-TEST(Bdpt, SameSeedSameImage) {
-  Scene scene = project_scene("cornell-box.xml", 32);
-  test::SceneOnDevice on_device(scene);
-  Bidirectional bdpt(on_device.inputs(), bdpt_with({}));
-  RenderSettings s;
-  s.spp = 2;
-  s.seed = 9;
-  std::vector<float> a = bdpt.render(s).image.rgb_layer(""), b = bdpt.render(s).image.rgb_layer("");
-  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(float)));
-  s.seed = 10;
-  std::vector<float> c = bdpt.render(s).image.rgb_layer("");
-  EXPECT_NE(0, std::memcmp(a.data(), c.data(), a.size() * sizeof(float)));
 }
 
 // The white furnace: a closed diffuse cube of albedo 0.5 whose walls emit 1 shows 1 / (1 - 0.5)

@@ -116,14 +116,6 @@ TEST(Merging, VcmMerges) {
   EXPECT_NE(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(float)));
 }
 
-TEST(Merging, SameSeedSameImage) {
-  for (const BidirSettings& settings : {pm_settings({}), vcm_settings({})}) {
-    Bidirectional integrator(box().on_device.inputs(), settings);
-    std::vector<float> a = render(integrator, 2, 9), b = render(integrator, 2, 9);
-    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(float)));
-  }
-}
-
 IntegratorParams params(std::map<std::string, std::string> values) { return IntegratorParams(std::move(values)); }
 
 TEST(Merging, ParametersAreChecked) {
