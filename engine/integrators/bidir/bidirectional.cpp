@@ -9,6 +9,11 @@
 #include "util/error.h"
 #include "util/log.h"
 
+// The kernels see these layouts too (4-byte scalars only: the same on both sides).
+static_assert(sizeof(GdrBidirOptions) == 32, "GdrBidirOptions layout changed");
+static_assert(sizeof(GdrBidirPathState) == 48, "GdrBidirPathState layout changed");
+static_assert(sizeof(GdrBidirVertex) == 52, "GdrBidirVertex layout changed");
+
 namespace gdr {
 namespace {
 
