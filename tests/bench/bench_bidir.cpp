@@ -49,15 +49,6 @@ BidirBench& bench() {
   return *b;
 }
 
-BidirSettings technique_settings(int technique) {
-  IntegratorParams none;
-  switch (technique) {
-    case BIDIR_BDPT: return bdpt_settings(none);
-    case BIDIR_PM: return pm_settings(none);
-    case BIDIR_VCM: return vcm_settings(none);
-    default: return lt_settings(none);
-  }
-}
 
 void label(benchmark::State& state, const char* what) {
   state.SetLabel(std::string(what) + ", cornell-box 256x256 on " + test::default_context().device().name);
@@ -66,9 +57,8 @@ void label(benchmark::State& state, const char* what) {
 // One pass (the scene's max_depth) of technique range(0) (BIDIR_*): lt's camera rays and light
 // subpaths; bdpt's, pm's and vcm's light subpaths, grid and camera subpaths.
 void BM_BidirPass(benchmark::State& state) {
-  static const char* const kNames[] = {"lt", "bdpt", "pm", "vcm"};
   BidirBench& b = bench();
-  Bidirectional tracer(RenderInputs{b.ctx, b.scene, *b.embree, *b.device_scene}, technique_settings(int(state.range(0))));
+  Bidirectional tracer(RenderInputs{b.ctx, b.scene, *b.embree, *b.device_scene}, bidir_settings(int(state.range(0)), IntegratorParams{}));
   RenderSettings s;
   s.spp = 1;
   s.max_depth = b.scene.max_depth;
@@ -93,7 +83,7 @@ void BM_BidirPass(benchmark::State& state) {
   state.counters["grid_vertices"] = rate("bidir/light_vertices");
   state.counters["grid_build_share"] =
       (b.stats.seconds("render/grid_build") - grid0) / std::max(1e-9, b.stats.seconds("render/trace") - trace0);
-  label(state, (std::string(kNames[state.range(0)]) + ": light subpaths").c_str());
+  label(state, (std::string(bidir_technique_name(int(state.range(0)))) + ": light subpaths").c_str());
 }
 BENCHMARK(BM_BidirPass)->DenseRange(BIDIR_LT, BIDIR_VCM)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -17,15 +17,7 @@ namespace {
 
 class BidirTechnique : public ::testing::TestWithParam<int> {
  protected:
-  BidirSettings settings() const {
-    IntegratorParams none;
-    switch (GetParam()) {
-      case BIDIR_BDPT: return bdpt_settings(none);
-      case BIDIR_PM: return pm_settings(none);
-      case BIDIR_VCM: return vcm_settings(none);
-      default: return lt_settings(none);
-    }
-  }
+  BidirSettings settings() const { return bidir_settings(GetParam(), IntegratorParams{}); }
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml"), 32);
 };
 
@@ -57,10 +49,7 @@ TEST_P(BidirTechnique, SameSeedSameImage) {
   EXPECT_NE(0, std::memcmp(a.data(), c.data(), a.size() * sizeof(float)));
 }
 
-std::string technique_name(const ::testing::TestParamInfo<int>& i) {
-  static const char* const kNames[] = {"lt", "bdpt", "pm", "vcm"};
-  return kNames[i.param];
-}
+std::string technique_name(const ::testing::TestParamInfo<int>& i) { return bidir_technique_name(i.param); }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, BidirTechnique, ::testing::Values(BIDIR_LT, BIDIR_BDPT, BIDIR_PM, BIDIR_VCM),
                          technique_name);

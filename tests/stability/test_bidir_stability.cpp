@@ -40,21 +40,6 @@ void render_bidir(const Scene& scene, int max_depth, const BidirSettings& settin
 
 const int kTechniques[] = {BIDIR_LT, BIDIR_BDPT, BIDIR_PM, BIDIR_VCM};
 
-const char* technique_name(int technique) {
-  static const char* const kNames[] = {"lt", "bdpt", "pm", "vcm"};
-  return kNames[technique];
-}
-
-BidirSettings technique_settings(int technique) {
-  IntegratorParams none;
-  switch (technique) {
-    case BIDIR_BDPT: return bdpt_settings(none);
-    case BIDIR_PM: return pm_settings(none);
-    case BIDIR_VCM: return vcm_settings(none);
-    default: return lt_settings(none);
-  }
-}
-
 // Every technique in one test: the scenes' kernels are then built once.
 TEST(BidirStability, ProjectScenesAreFinite) {
   int scenes = 0;
@@ -66,9 +51,9 @@ TEST(BidirStability, ProjectScenesAreFinite) {
     scene.camera.width = w;
     scene.camera.height = h;
     for (int technique : kTechniques) {
-      const std::string what = entry.path().string() + " (" + technique_name(technique) + ")";
+      const std::string what = entry.path().string() + " (" + bidir_technique_name(technique) + ")";
       BidirRun r;
-      render_bidir(scene, scene.max_depth > 0 ? scene.max_depth : 16, technique_settings(technique), &r);
+      render_bidir(scene, scene.max_depth > 0 ? scene.max_depth : 16, bidir_settings(technique, IntegratorParams{}), &r);
       EXPECT_TRUE(all_finite(r.rgb)) << what;
       EXPECT_EQ(r.stats.count("samples/nonfinite_rejected"), 0u) << what;
       EXPECT_GT(r.stats.count("bidir/light_subpaths"), 0u) << what;
@@ -104,15 +89,15 @@ TEST(BidirStability, ZeroAreaLightAndPointLight) {
   Scene scene = b.finish(camera_looking_z(0, 0, 0, 40.0f, 16));
   for (int technique : kTechniques) {
     BidirRun r;
-    render_bidir(scene, -1, technique_settings(technique), &r);
-    EXPECT_TRUE(all_finite(r.rgb)) << technique_name(technique);
-    EXPECT_EQ(r.stats.count("samples/nonfinite_rejected"), 0u) << technique_name(technique);
+    render_bidir(scene, -1, bidir_settings(technique, IntegratorParams{}), &r);
+    EXPECT_TRUE(all_finite(r.rgb)) << bidir_technique_name(technique);
+    EXPECT_EQ(r.stats.count("samples/nonfinite_rejected"), 0u) << bidir_technique_name(technique);
     double sum = 0;
     for (float v : r.rgb) sum += v;
-    EXPECT_GT(sum, 0.0) << technique_name(technique);
+    EXPECT_GT(sum, 0.0) << bidir_technique_name(technique);
     // The selection gives the triangle no power (it has no area), so every subpath of the 4
     // passes of 16 x 16 comes from the point light, whose emission never fails.
-    EXPECT_EQ(r.stats.count("bidir/light_subpaths"), uint64_t(16 * 16 * 4)) << technique_name(technique);
+    EXPECT_EQ(r.stats.count("bidir/light_subpaths"), uint64_t(16 * 16 * 4)) << bidir_technique_name(technique);
   }
 }
 

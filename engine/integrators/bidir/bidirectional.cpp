@@ -99,6 +99,24 @@ BidirSettings bdpt_settings(const IntegratorParams& params) {
 BidirSettings pm_settings(const IntegratorParams& params) { return merging_settings(BIDIR_PM, params); }
 BidirSettings vcm_settings(const IntegratorParams& params) { return merging_settings(BIDIR_VCM, params); }
 
+const char* bidir_technique_name(int technique) {
+  switch (technique) {
+    case BIDIR_BDPT: return "bdpt";
+    case BIDIR_PM: return "pm";
+    case BIDIR_VCM: return "vcm";
+    default: return "lt";
+  }
+}
+
+BidirSettings bidir_settings(int technique, const IntegratorParams& params) {
+  switch (technique) {
+    case BIDIR_BDPT: return bdpt_settings(params);
+    case BIDIR_PM: return pm_settings(params);
+    case BIDIR_VCM: return vcm_settings(params);
+    default: return lt_settings(params);
+  }
+}
+
 Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settings)
     : in_(in),
       settings_(settings),

@@ -67,6 +67,9 @@ BidirSettings lt_settings(const IntegratorParams& params);
 BidirSettings bdpt_settings(const IntegratorParams& params);
 BidirSettings pm_settings(const IntegratorParams& params);
 BidirSettings vcm_settings(const IntegratorParams& params);
+// The settings of `technique` (BIDIR_*) from params, and its registry name.
+BidirSettings bidir_settings(int technique, const IntegratorParams& params);
+const char* bidir_technique_name(int technique);
 
 class Bidirectional : public Integrator {
  public:
