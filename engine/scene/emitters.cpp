@@ -132,7 +132,7 @@ void finish_lights(LoadContext& ctx) {
   Vec3d lo{s.bounds_min[0], s.bounds_min[1], s.bounds_min[2]};
   Vec3d hi{s.bounds_max[0], s.bounds_max[1], s.bounds_max[2]};
   Vec3d center = (lo + hi) * 0.5;
-  double radius = 0.5 * length(hi - lo);
+  double radius = s.bounding_radius();
   if (!(radius > 0)) radius = 1.0;
   for (GdrLight& l : ctx.scene.lights) {
     if (l.type == LIGHT_DIRECTIONAL || l.type == LIGHT_CONSTANT || l.type == LIGHT_ENVMAP) {

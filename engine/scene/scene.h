@@ -1,6 +1,7 @@
 // The loaded scene: flat arrays in the layouts of kernels/shared/scene_types.h, ready to upload,
 // plus what the host needs on its own (names, the features the scene calls for).
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,16 @@ struct Scene {
   // Bounding box of the geometry (world space).
   float bounds_min[3] = {0, 0, 0};
   float bounds_max[3] = {0, 0, 0};
+
+  // Radius of the bounding box's bounding sphere (0 for an empty or point-sized scene).
+  double bounding_radius() const {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) {
+      double d = double(bounds_max[i]) - double(bounds_min[i]);
+      d2 += d * d;
+    }
+    return 0.5 * std::sqrt(d2);
+  }
 };
 
 }  // namespace gdr

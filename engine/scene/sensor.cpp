@@ -163,7 +163,7 @@ void default_camera(LoadContext& ctx) {
   Vec3d lo{s.bounds_min[0], s.bounds_min[1], s.bounds_min[2]};
   Vec3d hi{s.bounds_max[0], s.bounds_max[1], s.bounds_max[2]};
   Vec3d center = (lo + hi) * 0.5;
-  double radius = std::max(0.5 * length(hi - lo), 1e-3);
+  double radius = std::max(s.bounding_radius(), 1e-3);
   double distance = radius / std::tan(0.5 * 45.0 * M_PI / 180.0) + radius;
   GdrCamera& cam = ctx.scene.camera;
   cam = GdrCamera{};

@@ -52,6 +52,32 @@ inline GdrBidirVertex bidir_vertex(const GdrHit* hit, float3 wo, float3 beta, co
   return v;
 }
 
+// Continues subpath *st (in `slot`) from surface su by BSDF sampling in `mode` (block `block` of
+// its numbers, Russian roulette after rr_depth), updating its MIS sums; its ray goes to the next
+// queue. The state is written back whether it continues or not (a light subpath's stored count
+// must survive its end).
+inline void bidir_continue(GdrBidirPathState* st, const GdrBidirOptions* o, const PathSampler* ps, uint block,
+                           int rr_depth, int mode, const Bsdf* b, const Frame* frame, const Surface* su,
+                           float3 wo_local, float3 beta, uint slot, __global GdrBidirPathState* paths,
+                           __global uint* counters, __global uint* queue_out, __global GdrRayHit* rays_out) {
+  BsdfSample bs;
+  float3 wi;
+  float rr;
+  int next = path_continue_transport(st->depth, ps, block, rr_depth, st->rr_scale, mode, b, frame, su->ng, wo_local,
+                                     &beta, &bs, &wi, &rr);
+  if (next == PATH_ENDS_NONFINITE) atomic_inc(&counters[BIDIR_COUNTER_NONFINITE]);
+  if (next == PATH_CONTINUES) {
+    mis_scatter(&bs, bsdf_pdf(b, bs.wi, wo_local), fabs(dot(su->ng, wi)), o, st);
+    st->depth += 1;
+    vstore3(beta, 0, st->throughput);
+  }
+  paths[slot] = *st;
+  if (next != PATH_CONTINUES) return;
+  uint n = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
+  queue_out[n] = slot;
+  spawn_ray(&rays_out[n], su->p, su->ng, wi, slot);
+}
+
 // Camera rays of pixels [first_pixel, first_pixel + pixel_count), for the emission seen directly.
 __kernel void lt_camera(__global const GdrCamera* camera, GdrPtParams params, __global GdrRayHit* rays) {
   uint i = get_global_id(0);
@@ -187,23 +213,8 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     return;
   }
   PathSampler ps = path_sampler(params.seed, st.index, st.sample);
-  BsdfSample bs;
-  float3 wi;
-  float rr;
-  int next = path_continue_transport(st.depth, &ps, RNG_BLOCK_SUBPATH_BSDF(st.depth), params.rr_depth, st.rr_scale,
-                                     TRANSPORT_IMPORTANCE, &b, &frame, su.ng, wo_local, &beta, &bs, &wi, &rr);
-  if (next == PATH_ENDS_NONFINITE) atomic_inc(nonfinite);
-  if (next != PATH_CONTINUES) {
-    paths[slot] = st;
-    return;
-  }
-  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), &opts, &st);
-  st.depth = k;
-  vstore3(beta, 0, st.throughput);
-  paths[slot] = st;
-  uint n = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
-  queue_out[n] = slot;
-  spawn_ray(&rays_out[n], su.p, su.ng, wi, slot);
+  bidir_continue(&st, &opts, &ps, RNG_BLOCK_SUBPATH_BSDF(st.depth), params.rr_depth, TRANSPORT_IMPORTANCE, &b, &frame,
+                 &su, wo_local, beta, slot, paths, counters, queue_out, rays_out);
 }
 
 // Empties the splat slots whose shadow ray toward the camera Embree found blocked.
@@ -333,20 +344,8 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   if (opts.technique == BIDIR_PM && !delta) return;
 
   // BSDF sampling continues the subpath.
-  BsdfSample bs;
-  float3 wi;
-  float rr;
-  int next = path_continue_transport(st.depth, &ps, RNG_BLOCK_BSDF(st.depth), params.rr_depth, 1.0f,
-                                     TRANSPORT_RADIANCE, &b, &frame, su.ng, wo_local, &beta, &bs, &wi, &rr);
-  if (next == PATH_ENDS_NONFINITE) atomic_inc(nonfinite);
-  if (next != PATH_CONTINUES) return;
-  mis_scatter(&bs, bsdf_pdf(&b, bs.wi, wo_local), fabs(dot(su.ng, wi)), &opts, &st);
-  st.depth = t;
-  vstore3(beta, 0, st.throughput);
-  paths[slot] = st;
-  uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
-  queue_out[k] = slot;
-  spawn_ray(&rays_out[k], su.p, su.ng, wi, slot);
+  bidir_continue(&st, &opts, &ps, RNG_BLOCK_BSDF(st.depth), params.rr_depth, TRANSPORT_RADIANCE, &b, &frame, &su,
+                 wo_local, beta, slot, paths, counters, queue_out, rays_out);
 }
 
 // Connects the camera vertices queued in `connectable` to vertex j of their pixel's light subpath

@@ -98,19 +98,7 @@ TEST(Bdpt, WhiteFurnace) {
   s.spp = 64;
   s.seed = 4;
   s.max_depth = -1;
-  std::vector<float> rgb = bdpt.render(s).image.rgb_layer("");
-  double sum = 0, sum2 = 0;
-  for (float v : rgb) {
-    ASSERT_TRUE(std::isfinite(v));
-    sum += v;
-    sum2 += double(v) * v;
-  }
-  // The standard error of the image mean from the spread of its 64 x 3 values; 5 standard
-  // errors: false-positive rate below 1e-6.
-  double n = double(rgb.size()), mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / (n - 1));
-  EXPECT_NEAR(mean, 2.0, 5 * se + 2.0 * std::pow(0.5, 16)) << "standard error " << se;
-  EXPECT_LT(se, 0.02);
-  EXPECT_GT(se, 0.0);
+  test::expect_furnace_mean(bdpt.render(s).image.rgb_layer(""), 2.0, 2.0 * std::pow(0.5, 16));
 }
 
 TEST(Bdpt, StrategyParameterIsChecked) {

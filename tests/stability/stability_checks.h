@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <vector>
 
+#include "scene/load_scene.h"
 #include "support/render.h"
 
 namespace gdr::test {
@@ -28,6 +31,22 @@ inline Rendered render_checked(const Scene& scene, uint32_t seed, int spp, int m
   // make the non-finite count vacuous).
   EXPECT_EQ(stats.count("samples/paths"), uint64_t(scene.camera.width) * scene.camera.height * spp);
   return r;
+}
+
+// Calls f(path, scene) for every project scene (scenes/*.xml), each on a film `width` pixels wide
+// of its aspect (the field of view unchanged); returns how many there were.
+template <class F>
+int for_each_project_scene(int width, F&& f) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(GDR_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() != ".xml") continue;
+    ++scenes;
+    Scene scene = load_scene(entry.path().string());
+    scene.camera.height = std::max(1, width * scene.camera.height / std::max(1, scene.camera.width));
+    scene.camera.width = width;
+    f(entry.path().string(), scene);
+  }
+  return scenes;
 }
 
 inline bool all_finite(const std::vector<float>& v) {

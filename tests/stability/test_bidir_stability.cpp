@@ -5,7 +5,6 @@
 // counters (rejected non-finite samples, light subpaths, connections) are read, not assumed.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 
 #include "accel/embree_scene.h"
@@ -42,16 +41,9 @@ const int kTechniques[] = {BIDIR_LT, BIDIR_BDPT, BIDIR_PM, BIDIR_VCM};
 
 // Every technique in one test: the scenes' kernels are then built once.
 TEST(BidirStability, ProjectScenesAreFinite) {
-  int scenes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(GDR_SOURCE_DIR) + "/scenes")) {
-    if (entry.path().extension() != ".xml") continue;
-    ++scenes;
-    Scene scene = load_scene(entry.path().string());
-    int w = 24, h = std::max(1, w * scene.camera.height / std::max(1, scene.camera.width));
-    scene.camera.width = w;
-    scene.camera.height = h;
+  int scenes = for_each_project_scene(24, [](const std::string& path, const Scene& scene) {
     for (int technique : kTechniques) {
-      const std::string what = entry.path().string() + " (" + bidir_technique_name(technique) + ")";
+      const std::string what = path + " (" + bidir_technique_name(technique) + ")";
       BidirRun r;
       render_bidir(scene, scene.max_depth > 0 ? scene.max_depth : 16, bidir_settings(technique, IntegratorParams{}), &r);
       EXPECT_TRUE(all_finite(r.rgb)) << what;
@@ -68,7 +60,7 @@ TEST(BidirStability, ProjectScenesAreFinite) {
       for (float v : r.rgb) sum += v;
       EXPECT_GT(sum, 0.0) << what << " rendered black";
     }
-  }
+  });
   EXPECT_GE(scenes, 5);
 }
 

@@ -2,7 +2,6 @@
 // no sample rejected as NaN or Inf.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 
 #include "scene/load_scene.h"
@@ -12,22 +11,14 @@ namespace gdr::test {
 namespace {
 
 TEST(ProjectScenesFinite, NoNonFiniteSamples) {
-  int scenes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(GDR_SOURCE_DIR) + "/scenes")) {
-    if (entry.path().extension() != ".xml") continue;
-    ++scenes;
-    Scene scene = load_scene(entry.path().string());
-    // A small film of the scene's aspect (the field of view is unchanged).
-    int w = 24, h = std::max(1, w * scene.camera.height / std::max(1, scene.camera.width));
-    scene.camera.width = w;
-    scene.camera.height = h;
+  int scenes = for_each_project_scene(24, [](const std::string& path, const Scene& scene) {
     Rendered r = render_checked(scene, 401, 4, scene.max_depth > 0 ? scene.max_depth : 16);
-    EXPECT_TRUE(all_finite(r.rgb)) << entry.path();
-    EXPECT_EQ(r.nonfinite, 0u) << entry.path();
+    EXPECT_TRUE(all_finite(r.rgb)) << path;
+    EXPECT_EQ(r.nonfinite, 0u) << path;
     double sum = 0;
     for (float v : r.rgb) sum += v;
-    EXPECT_GT(sum, 0.0) << entry.path() << " rendered black";
-  }
+    EXPECT_GT(sum, 0.0) << path << " rendered black";
+  });
   EXPECT_GE(scenes, 5);
 }
 

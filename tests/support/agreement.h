@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -84,6 +85,23 @@ inline void expect_blocks_agree(const std::vector<std::vector<double>>& a, const
                                     << ", " << b_name << " " << mean_and_variance(y).mean;
   }
   EXPECT_GT(lit, blocks / 2) << what << ": too few lit blocks to show anything";
+}
+
+// The white furnace's check: every value finite, and the image mean within 5 standard errors
+// (from the spread of its values: each pixel's splats come from different vertices; false-positive
+// rate below 1e-6) plus `slack` of `expected`, with some noise (a noise-free image would mean
+// nothing was sampled) but not much.
+inline void expect_furnace_mean(const std::vector<float>& rgb, double expected, double slack = 0.0) {
+  double sum = 0, sum2 = 0;
+  for (float v : rgb) {
+    ASSERT_TRUE(std::isfinite(v));
+    sum += v;
+    sum2 += double(v) * v;
+  }
+  double n = double(rgb.size()), mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / (n - 1));
+  EXPECT_NEAR(mean, expected, 5 * se + slack) << "standard error " << se;
+  EXPECT_LT(se, 0.02);
+  EXPECT_GT(se, 0.0);
 }
 
 }  // namespace gdr::test

@@ -135,9 +135,6 @@ Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settin
       options_(settings.options),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       store_vertices_(lt() ? 0 : kBdptMaxSegments - 1),
-      scene_radius_(0.5f * std::sqrt(std::pow(in.scene.bounds_max[0] - in.scene.bounds_min[0], 2.0f) +
-                                     std::pow(in.scene.bounds_max[1] - in.scene.bounds_min[1], 2.0f) +
-                                     std::pow(in.scene.bounds_max[2] - in.scene.bounds_min[2], 2.0f))),
       queues_(in.context, capacity_, true),
       light_paths_(in.context, capacity_),
       camera_paths_(in.context, lt() ? 0 : capacity_),
@@ -164,8 +161,9 @@ GdrBidirOptions Bidirectional::pass_options(uint32_t sample, uint32_t light_subp
   GdrBidirOptions o = settings_.options;
   if (!merges()) return o;
   const int width = in_.scene.camera.width, height = in_.scene.camera.height;
+  const double scene_radius = in_.scene.bounding_radius();
   const float r0 = (settings_.radius > 0 ? settings_.radius : 1.5f / float(std::max(width, height))) *
-                   (scene_radius_ > 0 ? scene_radius_ : 1.0f);
+                   float(scene_radius > 0 ? scene_radius : 1.0);
   o.radius = r0 * std::pow(float(sample) + 1.0f, 0.5f * (settings_.radius_alpha - 1.0f));
   const double eta = M_PI * double(o.radius) * o.radius * light_subpaths;
   o.vm_normalization = float(1.0 / eta);

@@ -108,7 +108,6 @@ class Bidirectional : public Integrator {
   int store_vertices_;   // light-vertex store: vertices a light subpath (bdpt; 0 for lt)
   int stored_bound_ = 0; // the chunk's light subpaths stored at most this many vertices
   cl_uint stored_ = 0;   // and this many in all
-  float scene_radius_;
   RayQueues queues_;
   Buffer<GdrBidirPathState> light_paths_, camera_paths_;
   Buffer<GdrBidirVertex> store_, camera_vertices_;
