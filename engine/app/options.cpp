@@ -151,7 +151,18 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   params.back().option = app.add_flag("--aux")
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
                              ->group("Integrator parameters");
-  param("--shift", "shift", "shift mapping: hybrid (default) | replay")->check(CLI::IsMember({"hybrid", "replay"}));
+  param("--shift", "shift",
+        "shift mapping: hybrid (default) | replay | manifold (hybrid, with manifold walks across specular chains "
+        "between rough vertices)")
+      ->check(CLI::IsMember({"hybrid", "replay", "manifold"}));
+  param("--manifold-iterations", "manifold_iterations", "Newton iterations per manifold walk (default 20)")
+      ->check(CLI::Range(1, 1000));
+  param("--manifold-tolerance", "manifold_tolerance",
+        "distance at which a manifold walk has converged, over the scene's bounding radius (default 1e-4)")
+      ->check(kFinitePositive);
+  param("--manifold-precision", "manifold_precision",
+        "precision of the manifold solve: auto (default: double where the device has cl_khr_fp64) | float | double")
+      ->check(CLI::IsMember({"auto", "float", "double"}));
   param("--shift-threshold", "shift_threshold",
         "roughness at or below which a vertex counts as glossy/specular (not reconnected; default 0.001)")
       ->check(kFiniteNonNegative);

@@ -81,6 +81,7 @@ std::vector<DeviceInfo> list_devices() {
       clGetDeviceInfo(d, CL_DEVICE_MAX_COMPUTE_UNITS, sizeof(info.compute_units), &info.compute_units, nullptr);
       clGetDeviceInfo(d, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof(info.global_memory), &info.global_memory, nullptr);
       clGetDeviceInfo(d, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof(info.max_alloc), &info.max_alloc, nullptr);
+      info.fp64 = (" " + device_string(d, CL_DEVICE_EXTENSIONS) + " ").find(" cl_khr_fp64 ") != std::string::npos;
       out.push_back(info);
     }
   }
@@ -91,7 +92,7 @@ std::string format_device_list(const std::vector<DeviceInfo>& devices) {
   std::ostringstream s;
   for (const DeviceInfo& d : devices) {
     s << "  [" << d.index << "] " << d.platform_name << " | " << d.name << " | " << d.type << " | "
-      << d.compute_units << " compute units | " << d.opencl_c_version << " | "
+      << d.compute_units << " compute units | " << d.opencl_c_version << (d.fp64 ? " | fp64" : "") << " | "
       << (d.global_memory >> 20) << " MiB\n";
   }
   return s.str();

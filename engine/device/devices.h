@@ -19,6 +19,7 @@ struct DeviceInfo {
   cl_uint compute_units = 0;
   cl_ulong global_memory = 0;
   cl_ulong max_alloc = 0;  // CL_DEVICE_MAX_MEM_ALLOC_SIZE: the largest single buffer
+  bool fp64 = false;       // cl_khr_fp64: double-precision kernels
 };
 
 // All devices of all platforms; an empty list when there is no OpenCL platform at all.

@@ -10,7 +10,8 @@
 
 __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params, __global GdrRayHit* base_rays,
                            __global GdrRayHit* offset_rays, __global GptBaseState* bases,
-                           __global GptOffsetState* offsets, __global float4* acc, __global uint* counters) {
+                           __global GptOffsetState* offsets, __global GptChain* chains, __global float4* acc,
+                           __global uint* counters) {
   uint g = get_global_id(0);
   if (g >= params.path.pixel_count) return;
   GdrCamera cam = *camera;
@@ -24,6 +25,9 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   b.path = path_start(pixel, params.path.sample);
   b.rr_prob = 1.0f;
   bases[g] = b;
+#if defined(GDR_MANIFOLD)
+  chains[g].open = 0;
+#endif
   for (int j = 0; j < GPT_ACC_COUNT; ++j) acc[pixel * GPT_ACC_COUNT + j] = (float4)(0.0f);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     GptOffsetState os;

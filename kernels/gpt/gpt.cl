@@ -6,7 +6,9 @@
 //   gpt_shift  (the base's next vertex x_{k+1} is known): each traced offset follows the base's
 //              scattering at its own vertex by reconnection, half-vector copy, delta-lobe copy or
 //              random-number replay;
-//   host       Embree: offset rays, reconnection segments; gpt_scatter files the results.
+//   host       Embree: offset rays, reconnection segments; gpt_scatter files the results;
+//              with --shift manifold, the manifold stage solves the walks of offsets that waited
+//              for the base's specular chain, and gpt_manifold_join joins them to the base.
 // gpt_gather turns a pass's per-group sums into primal, gradient and direct-light images;
 // path_aux writes the first hits' auxiliary layers. Each step lives in its own file (the stages
 // they share with the path tracer in kernels/path, the shifts in kernels/shift, the offsets and

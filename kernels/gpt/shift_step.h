@@ -7,12 +7,16 @@
 #include "path/spawn.h"
 #include "sampling/path_sampler.h"
 #include "shift/policy.h"
+#if defined(GDR_MANIFOLD)
+#include "gpt/manifold_step.h"
+#endif
 
 // The base's next vertex x_{k+1} is known: every traced offset shifts its outgoing direction.
 __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHit* base_rays,
                         __global GdrRayHit* offset_rays, __global GdrRay* reconnect_rays,
                         __global const GptBaseState* bases, __global GptOffsetState* offsets,
-                        __global uint* counters, SCENE_DATA_ARGS) {
+                        __global GptChain* chains, __global GdrManifoldWalk* walks, __global uint* counters,
+                        SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -50,6 +54,12 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     next.p = sn.p;
     next.ng = sn.ng;
   }
+#if defined(GDR_MANIFOLD)
+  if (params.shift == GPT_SHIFT_MANIFOLD) {
+    GdrManifoldPoint q = {rh.hit.primID, rh.hit.u, rh.hit.v};
+    gpt_chain_step(&s, g, &base, &x, &next, q, chains, offsets, walks, counters, thr);
+  }
+#endif
 
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     __global GptOffsetState* og = &offsets[g * GPT_OFFSETS + k];

@@ -10,7 +10,8 @@ inline void kill_offset(GptOffsetState* o, __global uint* counters, int reason) 
   atomic_inc(&counters[reason]);
 }
 
-inline int offset_alive(const GptOffsetState* o) { return o->mode != GPT_MODE_DEAD; }
+// Alive offsets contribute; one waiting for a manifold walk does not (yet).
+inline int offset_alive(const GptOffsetState* o) { return o->mode != GPT_MODE_DEAD && o->mode != GPT_MODE_MANIFOLD; }
 
 inline ShiftPrefix offset_prefix(const GptOffsetState* o) {
   ShiftPrefix p;

@@ -3,10 +3,12 @@
 // pixels (+x, -x, +y, -y), traced in the same wavefront.
 #pragma once
 #include "shared/gradient_types.h"
+#include "shared/manifold_types.h"
 #include "shared/pt_types.h"
 
 #define GPT_SHIFT_HYBRID 0  // half-vector copy + reconnection
 #define GPT_SHIFT_REPLAY 1  // random-number replay
+#define GPT_SHIFT_MANIFOLD 2  // hybrid, and a manifold walk across specular chains between rough vertices
 
 typedef struct GptBaseState {
   GdrPathState path;    // the state every path carries (kernels/path stages work on it)
@@ -54,12 +56,14 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_OFFSET_RAYS, "")                                                                     \
   X(GPT_COUNTER_SHADOW_RAYS, "")                                                                     \
   X(GPT_COUNTER_RECONNECT_RAYS, "")                                                                  \
+  X(GPT_COUNTER_MANIFOLD_WALKS, "")                                                                  \
   X(GPT_COUNTER_NONFINITE, "samples/nonfinite_rejected")                                             \
   X(GPT_COUNTER_SHIFT_RECONNECT, "shifts/reconnection")                                              \
   X(GPT_COUNTER_SHIFT_HALF_VECTOR, "shifts/half_vector")                                             \
   X(GPT_COUNTER_SHIFT_DELTA, "shifts/delta_lobe")                                                    \
   X(GPT_COUNTER_SHIFT_DIRECTION, "shifts/direction_copy")   /* toward the environment */             \
   X(GPT_COUNTER_SHIFT_REPLAY, "shifts/replay")                                                       \
+  X(GPT_COUNTER_SHIFT_MANIFOLD, "shifts/manifold")                                                   \
   X(GPT_COUNTER_FAIL_OUTSIDE, "shift_failures/outside_image")                                        \
   X(GPT_COUNTER_FAIL_LOBE, "shift_failures/lobe_mismatch")  /* delta vs non-delta, or lobe missing */ \
   X(GPT_COUNTER_FAIL_REFRACTION, "shift_failures/refraction") /* total internal reflection in one */ \
@@ -67,5 +71,22 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_FAIL_ENVIRONMENT, "shift_failures/environment_mismatch") /* one escaped */           \
   X(GPT_COUNTER_FAIL_NOT_INVERTIBLE, "shift_failures/not_invertible") /* the reverse shift differs */ \
   X(GPT_COUNTER_FAIL_ZERO, "shift_failures/zero_pdf_or_value") /* or inconsistent sides */           \
-  X(GPT_COUNTER_FAIL_NONFINITE, "shift_failures/nonfinite") /* throughput or pdf ratio overflowed */
+  X(GPT_COUNTER_FAIL_NONFINITE, "shift_failures/nonfinite") /* throughput or pdf ratio overflowed */ \
+  X(GPT_COUNTER_FAIL_MANIFOLD, "shift_failures/manifold") /* the walk failed (manifold/fail_*) */       \
+  X(GPT_COUNTER_FAIL_CHAIN_LONG, "manifold/fail_chain_too_long") /* over MANIFOLD_MAX_CHAIN vertices */
 enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };
+
+// The base's specular chain while offsets wait for it (GPT_MODE_MANIFOLD), per group: from its
+// rough vertex x_b through the specular vertices the base has reached so far. When the base
+// reaches the next rough vertex, each waiting offset gets a manifold walk from its own rough
+// vertex to that one.
+typedef struct GptChain {
+  int open;   // offsets wait for this chain
+  int count;  // specular vertices recorded; the last one's lobe is filled when the base leaves it
+  GdrManifoldPoint origin;  // x_b
+  float origin_pdf;         // the base's pdf of its direction leaving x_b
+  float origin_rr;          // and its Russian-roulette survival probability there
+  GdrManifoldVertex v[MANIFOLD_MAX_CHAIN];
+  float pdf[MANIFOLD_MAX_CHAIN];  // the base's pdf of the direction leaving each vertex (delta: the lobe's probability)
+  float rr[MANIFOLD_MAX_CHAIN];
+} GptChain;

@@ -15,6 +15,8 @@
 #define GPT_MODE_RECONNECTING 2  // reconnected to the base's next vertex; visibility pending
 #define GPT_MODE_JOINED_RECENT 3 // joined the base at the base's current vertex
 #define GPT_MODE_JOINED 4        // shares all the base's vertices from here on
+#define GPT_MODE_MANIFOLD 5      // at a rough vertex, waits for the base's specular chain to end
+                                 // at a rough vertex (GptChain); contributes nothing meanwhile
 
 typedef struct GptOffsetState {
   float throughput[3];  // f(y) |J| / p(x) of the prefix so far

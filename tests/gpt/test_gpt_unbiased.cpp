@@ -143,6 +143,7 @@ TEST(GptUnbiased, GlossyPlatesHybrid) { expect_unbiased("glossy-plates.xml", GPT
 TEST(GptUnbiased, GlossyPlatesReplay) { expect_unbiased("glossy-plates.xml", GPT_SHIFT_REPLAY); }
 TEST(GptUnbiased, MirrorAndGlassHybrid) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_HYBRID); }
 TEST(GptUnbiased, MirrorAndGlassReplay) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_REPLAY); }
+TEST(GptUnbiased, MirrorAndGlassManifold) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_MANIFOLD); }
 
 }  // namespace
 }  // namespace gdr

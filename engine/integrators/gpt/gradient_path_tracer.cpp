@@ -1,39 +1,60 @@
 #include "integrators/gpt/gradient_path_tracer.h"
 
 #include "render/progressive_loop.h"
+#include "util/log.h"
 #include "render/wavefront/chunks.h"
 
 namespace gdr {
 namespace {
 
-// Groups in flight per chunk: a group holds five paths (about 1.5 KiB of queues and state).
+// Groups in flight per chunk: a group holds five paths (about 1.5 KiB of queues and state), and
+// with the manifold shift up to four walks (about 2 KiB more).
 constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
+constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
 constexpr const char* kProgram = "gpt/gpt.cl";
+
+Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt) {
+  return gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
+}
 
 }  // namespace
 
-const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux"};
+const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
+                                             "manifold_tolerance", "manifold_precision"};
 
 GptSettings gpt_settings(const IntegratorParams& params) {
   GptSettings s;
-  s.shift = params.choice("shift", "hybrid", {"hybrid", "replay"}) == "replay" ? GPT_SHIFT_REPLAY : GPT_SHIFT_HYBRID;
+  std::string shift = params.choice("shift", "hybrid", {"hybrid", "replay", "manifold"});
+  s.shift = shift == "replay" ? GPT_SHIFT_REPLAY : shift == "manifold" ? GPT_SHIFT_MANIFOLD : GPT_SHIFT_HYBRID;
   s.shift_threshold = params.non_negative("shift_threshold", s.shift_threshold);
   s.aux = params.flag("aux", false);
+  s.manifold = manifold_settings(params);
   return s;
+}
+
+bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt) {
+  return gpt.shift == GPT_SHIFT_MANIFOLD && scene.features.specular_chains();
+}
+
+std::string gpt_manifold_reason(const Scene& scene, const GptSettings& gpt) {
+  if (gpt.shift != GPT_SHIFT_MANIFOLD) return "off (the shift is not manifold)";
+  if (!scene.features.specular_chains()) return "off (no specular chains in the scene: the manifold shift is the hybrid one)";
+  return "on (--shift manifold, and the scene has specular chains)";
 }
 
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
     : in_(in),
       gpt_(gpt),
       params_(params),
-      kernels_(in.context, in.scene),
+      kernels_(in.context, in.scene, gpt_defines(in, gpt)),
       generate_(kernels_.make(kProgram, "gpt_generate")),
       scatter_(kernels_.make(kProgram, "gpt_scatter")),
       shade_(kernels_.make(kProgram, "gpt_shade")),
       shadow_(kernels_.make(kProgram, "gpt_shadow")),
       shift_(kernels_.make(kProgram, "gpt_shift")),
       gather_(kernels_.make(kProgram, "gpt_gather")),
-      capacity_(chunk_capacity(kMaxGroupsInFlight, in.scene.camera.width, in.scene.camera.height)),
+      capacity_(chunk_capacity(gpt_manifold_enabled(in.scene, gpt) ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight,
+                               in.scene.camera.width, in.scene.camera.height)),
       base_queues_(in.context, capacity_, false),
       offset_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
       reconnect_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
@@ -45,6 +66,15 @@ GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings
       counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height) {
   if (gpt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
+  const bool manifold = gpt_manifold_enabled(in.scene, gpt);
+  chains_ = Buffer<GptChain>(in.context, manifold ? capacity_ : 0);
+  walks_ = Buffer<GdrManifoldWalk>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
+  walk_results_ = Buffer<GdrManifoldResult>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
+  if (manifold) {
+    manifold_.emplace(in, kernels_, kProgram, capacity_ * GPT_OFFSETS, gpt.manifold);
+    join_.emplace(kernels_.make(kProgram, "gpt_manifold_join"));
+  }
+  if (gpt.shift == GPT_SHIFT_MANIFOLD) log::info("manifold walks: ", gpt_manifold_reason(in.scene, gpt));
 }
 
 GdrGptParams GradientPathTracer::params(const RenderSettings& settings, uint32_t sample, uint32_t first,
@@ -62,12 +92,22 @@ void GradientPathTracer::intersect_offsets(cl_uint rays, cl_uint reconnects) {
   scatter_.args(rays, offset_rays_, reconnects, reconnect_rays_, offsets_).run(rays + reconnects);
 }
 
+void GradientPathTracer::walk_offsets(const GdrGptParams& p, cl_uint walks) {
+  if (!manifold_ || walks == 0) return;
+  manifold_->solve(walks_, walks, walk_results_, p.path);
+  counters_.reset();
+  join_->args(p, walks, walks_, walk_results_, chains_, offsets_, counters_.buffer(), in_.device_scene).run(walks);
+  counters_.read();
+}
+
 void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
   GdrGptParams p = params(settings, sample, first, count);
   Buffer<GdrRayHit>* base_rays = base_queues_.rays;
 
   counters_.reset();
-  generate_.args(in_.device_scene.camera(), p, base_rays[0], offset_rays_, bases_, offsets_, acc_, counters_.buffer())
+  generate_
+      .args(in_.device_scene.camera(), p, base_rays[0], offset_rays_, bases_, offsets_, chains_, acc_,
+            counters_.buffer())
       .run(count);
   counters_.read();
   intersect(in_.embree, base_rays[0], count, true, "camera");
@@ -91,15 +131,19 @@ void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sa
     if (next > 0) {
       counters_.reset();
       shift_
-          .args(p, next, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_, counters_.buffer(),
-                in_.device_scene)
+          .args(p, next, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_, chains_, walks_,
+                counters_.buffer(), in_.device_scene)
           .run(next);
       counters_.read();
-      intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], counters_[GPT_COUNTER_RECONNECT_RAYS]);
+      const cl_uint offset_rays = counters_[GPT_COUNTER_OFFSET_RAYS];
+      const cl_uint reconnects = counters_[GPT_COUNTER_RECONNECT_RAYS];
+      walk_offsets(p, counters_[GPT_COUNTER_MANIFOLD_WALKS]);
+      intersect_offsets(offset_rays, reconnects);
     }
     active = next;
   }
   counters_.report(in_.context.stats());
+  if (manifold_) manifold_->report(in_.context.stats());
 }
 
 GradientImages GradientPathTracer::render_gradients(const RenderSettings& settings) {

@@ -5,7 +5,10 @@
 // the directly seen emission (kept out of the gradients), then reconstructs the image.
 //
 // Parameters (IntegratorParams):
-//   shift            hybrid (default: reconnection where rough, half-vector copy elsewhere) | replay
+//   shift            hybrid (default: reconnection where rough, half-vector copy elsewhere) | replay |
+//                    manifold (hybrid, and a manifold walk where the base runs from a rough vertex
+//                    through specular vertices to the next rough vertex, so that such offsets
+//                    rejoin the base; render/manifold_walks.h has the walk's settings)
 //   shift_threshold  roughness at or below which a vertex is glossy, not reconnected (0.001)
 //   aux              true: also write the first hits' albedo, normal and depth layers
 //   recon, recon_solver, alpha: the reconstruction (render/gradient_images.h)
@@ -16,6 +19,7 @@
 #include "render/gradient_film.h"
 #include "render/gradient_images.h"
 #include "render/integrator.h"
+#include "render/manifold_walks.h"
 #include "render/wavefront/device_counters.h"
 #include "render/wavefront/kernel_factory.h"
 #include "render/wavefront/ray_queues.h"
@@ -27,6 +31,7 @@ struct GptSettings {
   int shift = GPT_SHIFT_HYBRID;  // GPT_SHIFT_*
   float shift_threshold = GDR_GLOSSY_THRESHOLD;
   bool aux = false;
+  ManifoldSettings manifold;
 };
 extern const std::vector<std::string> kGptParams;
 GptSettings gpt_settings(const IntegratorParams& params);
@@ -44,6 +49,8 @@ class GradientPathTracer : public Integrator {
   GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
   // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
   void intersect_offsets(cl_uint rays, cl_uint reconnects);
+  // Solves the walks the shift step queued and joins their offsets to the base.
+  void walk_offsets(const GdrGptParams& p, cl_uint walks);
 
   RenderInputs in_;
   GptSettings gpt_;
@@ -62,6 +69,16 @@ class GradientPathTracer : public Integrator {
   DeviceCounters counters_;
   GradientFilm film_;
   std::optional<AuxLayers> aux_;
+  // The manifold shift, where the scene has specular chains (else --shift manifold is hybrid).
+  Buffer<GptChain> chains_;
+  Buffer<GdrManifoldWalk> walks_;
+  Buffer<GdrManifoldResult> walk_results_;
+  std::optional<ManifoldWalks> manifold_;
+  std::optional<Kernel> join_;
 };
+
+// Whether --shift manifold walks in this scene, and why (for the log and --info).
+bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt);
+std::string gpt_manifold_reason(const Scene& scene, const GptSettings& gpt);
 
 }  // namespace gdr

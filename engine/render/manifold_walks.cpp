@@ -1,0 +1,87 @@
+#include "render/manifold_walks.h"
+
+#include "render/wavefront/ray_queues.h"
+#include "stats/stats.h"
+#include "util/error.h"
+
+namespace gdr {
+
+const std::vector<std::string> kManifoldParams = {"manifold_iterations", "manifold_tolerance", "manifold_precision"};
+
+ManifoldSettings manifold_settings(const IntegratorParams& params) {
+  ManifoldSettings s;
+  float iterations = params.non_negative("manifold_iterations", float(s.max_iterations));
+  if (!(iterations >= 1.0f) || iterations != float(int(iterations)) || iterations > 1000.0f) {
+    throw Error("integrator parameter manifold_iterations: must be a whole number in [1, 1000]");
+  }
+  s.max_iterations = int(iterations);
+  s.tolerance = params.non_negative("manifold_tolerance", s.tolerance);
+  if (!(s.tolerance > 0.0f) || s.tolerance > 0.1f) {
+    throw Error("integrator parameter manifold_tolerance: must lie in (0, 0.1]");
+  }
+  s.precision = params.choice("manifold_precision", s.precision, {"auto", "float", "double"});
+  return s;
+}
+
+bool manifold_uses_fp64(const DeviceInfo& device, const ManifoldSettings& settings) {
+  if (settings.precision == "float") return false;
+  if (settings.precision == "double" && !device.fp64) {
+    throw DeviceError("--manifold-precision double: device '" + device.name + "' has no cl_khr_fp64");
+  }
+  return device.fp64;
+}
+
+Defines manifold_defines(const DeviceInfo& device, const ManifoldSettings& settings) {
+  Defines d{{"GDR_MANIFOLD", "1"}};
+  if (manifold_uses_fp64(device, settings)) d["GDR_MANIFOLD_FP64"] = "1";
+  return d;
+}
+
+ManifoldWalks::ManifoldWalks(const RenderInputs& in, const KernelFactory& kernels, const std::string& program,
+                             size_t capacity, const ManifoldSettings& settings)
+    : in_(in),
+      capacity_(capacity),
+      begin_(kernels.make(program, "manifold_begin")),
+      propose_(kernels.make(program, "manifold_propose")),
+      retrace_(kernels.make(program, "manifold_retrace")),
+      accept_(kernels.make(program, "manifold_accept")),
+      states_(in.context, capacity),
+      active_{Buffer<cl_uint>(in.context, capacity), Buffer<cl_uint>(in.context, capacity)},
+      rays_{Buffer<GdrRayHit>(in.context, capacity, kRayQueueFlags), Buffer<GdrRayHit>(in.context, capacity, kRayQueueFlags)},
+      counters_(in.context, GDR_COUNTER_NAMES(MANIFOLD_COUNTERS)) {
+  params_.tolerance = float(settings.tolerance * in.scene.bounding_radius());
+  params_.max_iterations = settings.max_iterations;
+}
+
+void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, Buffer<GdrManifoldResult>& results,
+                          const GdrPtParams& scene) {
+  if (count == 0) return;
+  if (count > capacity_) throw Error("manifold walks: " + std::to_string(count) + " walks exceed the stage's capacity");
+  ScopedTimer timer(in_.context.stats(), "render/manifold");
+  counters_.reset();
+  begin_.args(count, states_, results, active_[0], counters_.buffer()).run(count);
+  cl_uint active = count;
+  for (int cur = 0; active > 0; cur = 1 - cur) {
+    counters_.reset();
+    propose_.args(params_, active, active_[cur], walks, states_, results, rays_[0], counters_.buffer(), scene,
+                  in_.device_scene)
+        .run(active);
+    cl_uint rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
+    // One round per chain segment: at most MANIFOLD_MAX_CHAIN + 1.
+    for (int round = 0; rays > 0 && round <= MANIFOLD_MAX_CHAIN; ++round) {
+      Buffer<GdrRayHit>& in = rays_[round % 2];
+      intersect(in_.embree, in, rays, false, "manifold");
+      counters_.reset();
+      retrace_.args(rays, in, rays_[1 - round % 2], walks, states_, counters_.buffer(), scene, in_.device_scene)
+          .run(rays);
+      rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
+    }
+    counters_.reset();
+    accept_.args(params_, active, active_[cur], active_[1 - cur], walks, states_, results, counters_.buffer(), scene,
+                 in_.device_scene)
+        .run(active);
+    active = counters_.read()[MANIFOLD_COUNTER_ACTIVE];
+  }
+}
+
+}  // namespace gdr

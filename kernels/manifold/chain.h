@@ -1,0 +1,77 @@
+// A specular chain x_0 -> x_1 .. x_m -> x_e and its tangent space: with x_0 fixed, the constraints
+// c_1 .. c_m tie x_1 .. x_m to x_e. Their block-tridiagonal matrix (2x2 blocks A_i, B_i, C_i,
+// constraint.h) is solved by block elimination for dx_1/dx_e, which gives both the Newton step
+// (how to move x_1 so that the chain's end moves toward its target) and the generalized geometry
+// term |d omega_0 / dA(x_e)| of the chain (Jakob & Marschner 2012, section 4).
+#pragma once
+#include "manifold/constraint.h"
+
+typedef struct ManifoldChain {
+  int count;  // m
+  ManifoldSurface x[MANIFOLD_MAX_CHAIN + 2];  // x_0, x_1 .. x_m, x_e
+  int flags[MANIFOLD_MAX_CHAIN];
+  mreal3 kept[MANIFOLD_MAX_CHAIN];            // near-specular vertices' micro-normals
+} ManifoldChain;
+
+// dx_1/dx_e (plane coordinates of x_1 per plane coordinates of x_e) at a chain whose constraints
+// hold. Returns 0 or the MANIFOLD_COUNTER_FAIL_* reason.
+inline int manifold_end_derivative(const SceneData* sd, const ManifoldChain* ch, M2* dx1) {
+  const int m = ch->count;
+  M2 A[MANIFOLD_MAX_CHAIN], B[MANIFOLD_MAX_CHAIN], C[MANIFOLD_MAX_CHAIN];
+  for (int i = 0; i < m; ++i) {
+    mreal2 c;
+    int r = manifold_constraint(sd, &ch->x[i], &ch->x[i + 1], &ch->x[i + 2], ch->flags[i], ch->kept[i], &c, &A[i],
+                                &B[i], &C[i]);
+    if (r) return r;
+  }
+  // Block elimination: U_1 = B_1, U_i = B_i - A_i U_{i-1}^-1 C_{i-1}; the right-hand side is -C_m dx_e
+  // in the last row only, so back substitution gives X_m = -U_m^-1 C_m, X_i = -U_i^-1 C_i X_{i+1}.
+  M2 Uinv[MANIFOLD_MAX_CHAIN];
+  M2 U = B[0];
+  for (int i = 0; i < m; ++i) {
+    if (i > 0) U = m2_sub(B[i], m2_mul(m2_mul(A[i], Uinv[i - 1]), C[i - 1]));
+    if (!m2_inverse(U, &Uinv[i])) return MANIFOLD_COUNTER_FAIL_SINGULAR;
+  }
+  M2 X = m2_neg(m2_mul(Uinv[m - 1], C[m - 1]));
+  for (int i = m - 2; i >= 0; --i) X = m2_neg(m2_mul(Uinv[i], m2_mul(C[i], X)));
+  if (!isfinite(m2_det(X))) return MANIFOLD_COUNTER_FAIL_SINGULAR;
+  *dx1 = X;
+  return 0;
+}
+
+// |d omega_0 / dA(x_e)| from dx_1/dx_e: the area x_1 sweeps per unit area of x_e, seen from x_0.
+inline mreal manifold_geometry(const ManifoldChain* ch, M2 dx1) {
+  mreal3 d = ch->x[1].p - ch->x[0].p;
+  mreal r2 = dot(d, d);
+  if (!(r2 > (mreal)0)) return 0;
+  mreal cos1 = fabs(dot(d, ch->x[1].ng)) / sqrt(r2);
+  return fabs(m2_det(dx1)) * cos1 / r2;
+}
+
+// The Newton step: where x_1 goes so that the chain's end moves by beta toward `target`.
+inline mreal3 manifold_step(const ManifoldChain* ch, M2 dx1, mreal3 target, mreal beta) {
+  const ManifoldSurface* e = &ch->x[ch->count + 1];
+  mreal3 d = target - e->p;
+  mreal2 de = (mreal2)(dot(d, e->dpdu), dot(d, e->dpdv));
+  mreal2 d1 = m2_apply(dx1, de) * beta;
+  return ch->x[1].p + d1.x * ch->x[1].dpdu + d1.y * ch->x[1].dpdv;
+}
+
+// Scattering at a chain vertex about the (unit) normal or micro-normal nm: the direction w_b with
+// eta_a w_a + eta_b w_b parallel to nm. Returns 0 on total internal reflection.
+inline int manifold_scatter(mreal3 wa, mreal3 nm, int transmit, mreal2 eta, mreal3* wb) {
+  mreal ca = dot(wa, nm);
+  if (!transmit) {
+    *wb = 2 * ca * nm - wa;
+    return 1;
+  }
+  if (ca < (mreal)0) {
+    nm = -nm;
+    ca = -ca;
+  }
+  mreal e = eta.x / eta.y;
+  mreal sin2b = e * e * fmax((mreal)0, (mreal)1 - ca * ca);
+  if (sin2b >= (mreal)1) return 0;
+  *wb = -e * wa + (e * ca - sqrt((mreal)1 - sin2b)) * nm;
+  return 1;
+}

@@ -1,0 +1,231 @@
+// The manifold walk as an iterative wavefront stage (engine/render/manifold_walks drives it):
+//   manifold_begin    every walk starts from the base chain's vertices;
+//   manifold_propose  from the accepted chain, a Newton step on the constraints moves x_1 so that
+//                     the chain's end moves toward x_e (the first proposal aims at the base's x_1);
+//                     a ray leaves x_0 toward the new x_1;
+//   host              Embree traces the chain, one segment per round: manifold_retrace scatters
+//                     each hit by its vertex's constraint (the kept normal or micro-normal) into
+//                     the next segment, until the chain's last segment reaches x_e's shape;
+//   manifold_accept   a proposal closer to x_e is accepted (the step grows), a farther or broken
+//                     one is rejected (the step halves); converged and failed walks leave the
+//                     active list. A converged walk is walked back from the base chain's start,
+//                     seeded with its solution, and must arrive at the base chain.
+#pragma once
+#include "core/ray_queue.h"
+#include "manifold/chain.h"
+#include "path/scene.h"
+
+// The chain from `start` through the given specular vertices to `end`, with the walk's constraints.
+inline void manifold_load_chain(const SceneData* sd, const GdrManifoldWalk* w, GdrManifoldPoint start,
+                                const GdrManifoldPoint* verts, GdrManifoldPoint end, ManifoldChain* ch) {
+  ch->count = w->count;
+  ch->x[0] = manifold_surface(sd, start);
+  for (int i = 0; i < w->count; ++i) {
+    ch->x[i + 1] = manifold_surface(sd, verts[i]);
+    ch->flags[i] = w->v[i].flags;
+    ch->kept[i] = (mreal3)(w->v[i].h[0], w->v[i].h[1], w->v[i].h[2]);
+  }
+  ch->x[w->count + 1] = manifold_surface(sd, end);
+}
+
+inline GdrManifoldPoint walk_start(const GdrManifoldWalk* w, const GdrManifoldState* st) {
+  return st->phase ? w->origin : w->start;
+}
+
+inline void walk_fail(__global GdrManifoldResult* r, __global uint* counters, int reason) {
+  r->status = reason;
+  atomic_inc(&counters[reason]);
+}
+
+inline void write_chain_ray(__global GdrRayHit* rays, __global uint* counters, mreal3 p, mreal3 ng, mreal3 d, uint id) {
+  uint slot = atomic_inc(&counters[MANIFOLD_COUNTER_TRACING]);
+  atomic_inc(&counters[MANIFOLD_COUNTER_RAYS]);
+  float3 df = to_float3(d), pf = to_float3(p);
+  write_ray_hit(&rays[slot], leaving_origin(pf, to_float3(ng), df), df, 0.0f, INFINITY, id);
+}
+
+__kernel void manifold_begin(uint count, __global GdrManifoldState* states, __global GdrManifoldResult* results,
+                             __global uint* active, __global uint* counters) {
+  uint w = get_global_id(0);
+  if (w >= count) return;
+  GdrManifoldState st;
+  st.phase = 0;
+  st.iterations = 0;
+  st.beta = 1.0f;
+  st.error = INFINITY;
+  st.accepted = 0;
+  st.traced = 0;
+  st.trace_status = 0;
+  states[w] = st;
+  results[w].status = 0;
+  results[w].iterations = 0;
+  results[w].g_walk = results[w].g_origin = 0.0f;
+  active[w] = w;
+  atomic_inc(&counters[MANIFOLD_COUNTER_WALKS]);
+}
+
+__kernel void manifold_propose(GdrManifoldParams params, uint count, __global const uint* active,
+                               __global const GdrManifoldWalk* walks, __global GdrManifoldState* states,
+                               __global const GdrManifoldResult* results, __global GdrRayHit* rays,
+                               __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  SceneData sd = path_scene(&scene_params, SCENE_DATA_NAMES);
+  uint w = active[i];
+  GdrManifoldWalk W = walks[w];
+  GdrManifoldState st = states[w];
+  ManifoldSurface x0 = manifold_surface(&sd, walk_start(&W, &st));
+  mreal3 x1;
+  st.traced = 0;
+  st.trace_status = 0;
+  if (!st.accepted) {
+    // First proposal: toward the base chain's x_1 (the reverse walk: toward the solution's).
+    x1 = manifold_position(&sd, st.phase ? results[w].v[0] : W.v[0].at);
+  } else {
+    ManifoldChain ch;
+    manifold_load_chain(&sd, &W, walk_start(&W, &st), st.chain, st.chain[W.count], &ch);
+    M2 dx1;
+    st.trace_status = manifold_end_derivative(&sd, &ch, &dx1);
+    if (!st.trace_status) x1 = manifold_step(&ch, dx1, manifold_position(&sd, W.end), st.beta);
+  }
+  if (!st.trace_status) {
+    mreal3 d = x1 - x0.p;
+    mreal len = length(d);
+    if (!(len > (mreal)0)) st.trace_status = MANIFOLD_COUNTER_FAIL_MERGED;
+    else write_chain_ray(rays, counters, x0.p, x0.ng, d / len, w);
+  }
+  states[w] = st;
+}
+
+// One segment of every proposal being traced: Embree's hit becomes the next chain vertex.
+__kernel void manifold_retrace(uint count, __global const GdrRayHit* rays_in, __global GdrRayHit* rays_out,
+                               __global const GdrManifoldWalk* walks, __global GdrManifoldState* states,
+                               __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  SceneData sd = path_scene(&scene_params, SCENE_DATA_NAMES);
+  GdrRayHit rh = rays_in[i];
+  uint w = rh.ray.id;
+  __global GdrManifoldState* st = &states[w];
+  __global const GdrManifoldWalk* W = &walks[w];
+  int j = st->traced, m = W->count;
+  if (rh.hit.geomID == GDR_INVALID_ID) {
+    st->trace_status = MANIFOLD_COUNTER_FAIL_MISS;
+    return;
+  }
+  GdrManifoldPoint q = {rh.hit.primID, rh.hit.u, rh.hit.v};
+  st->proposal[j] = q;
+  st->traced = j + 1;
+  if (j == m) {
+    // The last segment must reach x_e's surface unblocked.
+    if (manifold_shape(&sd, q) != manifold_shape(&sd, W->end)) st->trace_status = MANIFOLD_COUNTER_FAIL_OCCLUDED;
+    return;
+  }
+  if (manifold_shape(&sd, q) != manifold_shape(&sd, W->v[j].at)) {
+    st->trace_status = MANIFOLD_COUNTER_FAIL_OTHER_OBJECT;
+    return;
+  }
+  ManifoldSurface x = manifold_surface(&sd, q);
+  int flags = W->v[j].flags, transmit = (flags & MANIFOLD_VERTEX_TRANSMIT) != 0;
+  mreal3 wa = -to_mreal3((float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z));
+  mreal3 nm = x.n;
+  if (!(flags & MANIFOLD_VERTEX_DELTA)) {
+    nm = manifold_to_world(&x, (mreal3)(W->v[j].h[0], W->v[j].h[1], W->v[j].h[2]));
+    nm = normalize(nm);
+  }
+  mreal3 wb;
+  int ok = manifold_scatter(wa, nm, transmit, manifold_etas(&sd, &x, flags, wa), &wb);
+  // The lobe must leave on the side it did on the base chain.
+  ok = ok && (dot(wa, x.ng) * dot(wb, x.ng) > (mreal)0) == !transmit;
+  if (!ok) {
+    st->trace_status = MANIFOLD_COUNTER_FAIL_LOBE;
+    return;
+  }
+  write_chain_ray(rays_out, counters, x.p, x.ng, normalize(wb), w);
+}
+
+__kernel void manifold_accept(GdrManifoldParams params, uint count, __global const uint* active,
+                              __global uint* next_active, __global const GdrManifoldWalk* walks,
+                              __global GdrManifoldState* states, __global GdrManifoldResult* results,
+                              __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  SceneData sd = path_scene(&scene_params, SCENE_DATA_NAMES);
+  uint w = active[i];
+  GdrManifoldWalk W = walks[w];
+  GdrManifoldState st = states[w];
+  __global GdrManifoldResult* res = &results[w];
+  const int m = W.count;
+  st.iterations += 1;
+  res->iterations += 1;
+  atomic_inc(&counters[MANIFOLD_COUNTER_ITERATIONS]);
+  mreal3 target = manifold_position(&sd, W.end);
+  if (st.trace_status || st.traced != m + 1) {
+    if (!st.accepted) {  // the projection of the first guess already fails
+      walk_fail(res, counters, st.trace_status ? st.trace_status : MANIFOLD_COUNTER_FAIL_MISS);
+      states[w] = st;
+      return;
+    }
+    st.beta *= 0.5f;
+  } else {
+    float error = (float)length(manifold_position(&sd, st.proposal[m]) - target);
+    if (!st.accepted || error < st.error) {
+      for (int k = 0; k <= m; ++k) st.chain[k] = st.proposal[k];
+      if (st.accepted) st.beta = fmin(1.0f, 2.0f * st.beta);
+      st.accepted = 1;
+      st.error = error;
+    } else {
+      st.beta *= 0.5f;
+    }
+  }
+  if (st.accepted && st.error < params.tolerance) {
+    // Converged: the chain ends at x_e itself.
+    ManifoldChain ch;
+    manifold_load_chain(&sd, &W, walk_start(&W, &st), st.chain, W.end, &ch);
+    M2 dx1;
+    int r = manifold_end_derivative(&sd, &ch, &dx1);
+    if (r) {
+      walk_fail(res, counters, r);
+      states[w] = st;
+      return;
+    }
+    float g = (float)manifold_geometry(&ch, dx1);
+    if (st.phase == 0) {
+      for (int k = 0; k < m; ++k) res->v[k] = st.chain[k];
+      res->g_walk = g;
+      st.phase = 1;
+      st.iterations = 0;
+      st.accepted = 0;
+      st.beta = 1.0f;
+      st.error = INFINITY;
+    } else {
+      // Reversible: the walk back arrived at the base chain's own vertices.
+      float far = 0.0f;
+      for (int k = 0; k < m; ++k) {
+        far = fmax(far, (float)length(manifold_position(&sd, st.chain[k]) - manifold_position(&sd, W.v[k].at)));
+      }
+      if (!(far < 100.0f * params.tolerance)) {
+        walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_NOT_REVERSIBLE);
+      } else {
+        GdrManifoldPoint base[MANIFOLD_MAX_CHAIN];
+        for (int k = 0; k < m; ++k) base[k] = W.v[k].at;
+        manifold_load_chain(&sd, &W, W.origin, base, W.end, &ch);
+        r = manifold_end_derivative(&sd, &ch, &dx1);
+        if (r) {
+          walk_fail(res, counters, r);
+        } else {
+          res->g_origin = (float)manifold_geometry(&ch, dx1);
+          atomic_inc(&counters[MANIFOLD_COUNTER_SOLVED]);
+        }
+      }
+      states[w] = st;
+      return;
+    }
+  } else if (st.iterations >= params.max_iterations || st.beta < 1.0f / 1024.0f) {
+    walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_NO_CONVERGENCE);
+    states[w] = st;
+    return;
+  }
+  states[w] = st;
+  next_active[atomic_inc(&counters[MANIFOLD_COUNTER_ACTIVE])] = w;
+}
