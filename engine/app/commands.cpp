@@ -16,6 +16,7 @@
 #include "image/image_metrics.h"
 #include "integrators/registry.h"
 #include "render/gradient_images.h"
+#include "render/manifold_walks.h"
 #include "scene/describe_scene.h"
 #include "scene/load_scene.h"
 #include "util/error.h"
@@ -44,6 +45,7 @@ int info_command(const Options& o) {
   DeviceInfo device = select_device(o.device);
   Scene scene = load_scene(o.info_scene, load_options(o));
   std::printf("%s", describe_scene(scene).c_str());
+  std::printf("%s\n", manifold_description(scene, device, manifold_settings(IntegratorParams(o.integrator_params))).c_str());
   std::printf("device: [%d] %s (%s)\n", device.index, device.name.c_str(), device.platform_name.c_str());
   return 0;
 }

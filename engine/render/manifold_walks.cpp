@@ -37,6 +37,18 @@ Defines manifold_defines(const DeviceInfo& device, const ManifoldSettings& setti
   return d;
 }
 
+std::string manifold_description(const Scene& scene, const DeviceInfo& device, const ManifoldSettings& settings) {
+  if (!scene.features.specular_chains()) {
+    return "manifold walks: off (no specular chains: nothing of the manifold shift is compiled, and --shift manifold "
+           "is the hybrid shift)";
+  }
+  std::string precision = settings.precision == "float" ? "float (asked for)"
+                          : device.fp64                 ? "double (the device has cl_khr_fp64)"
+                                                        : "float (the device has no cl_khr_fp64)";
+  return "manifold walks: on for gpt --shift manifold (specular chains), solved in " + precision +
+         ", at most " + std::to_string(MANIFOLD_MAX_CHAIN) + " specular vertices per chain";
+}
+
 ManifoldWalks::ManifoldWalks(const RenderInputs& in, const KernelFactory& kernels, const std::string& program,
                              size_t capacity, const ManifoldSettings& settings)
     : in_(in),
@@ -51,6 +63,8 @@ ManifoldWalks::ManifoldWalks(const RenderInputs& in, const KernelFactory& kernel
       counters_(in.context, GDR_COUNTER_NAMES(MANIFOLD_COUNTERS)) {
   params_.tolerance = float(settings.tolerance * in.scene.bounding_radius());
   params_.max_iterations = settings.max_iterations;
+  params_.reverse_tolerance = params_.tolerance * settings.reverse_factor;
+  params_.ray_epsilon = float(1e-5 * in.scene.bounding_radius());
 }
 
 void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, Buffer<GdrManifoldResult>& results,
@@ -72,7 +86,7 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
       Buffer<GdrRayHit>& in = rays_[round % 2];
       intersect(in_.embree, in, rays, false, "manifold");
       counters_.reset();
-      retrace_.args(rays, in, rays_[1 - round % 2], walks, states_, counters_.buffer(), scene, in_.device_scene)
+      retrace_.args(params_, rays, in, rays_[1 - round % 2], walks, states_, counters_.buffer(), scene, in_.device_scene)
           .run(rays);
       rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
     }

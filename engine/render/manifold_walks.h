@@ -27,6 +27,9 @@ struct ManifoldSettings {
   int max_iterations = 20;
   float tolerance = 1e-4f;  // relative to the scene's bounding radius
   std::string precision = "auto";
+  // How far the walk back may end from the base chain's vertices, in tolerances: a walk that
+  // converges lands within a few; one that found another solution lands far away.
+  float reverse_factor = 100.0f;
 };
 extern const std::vector<std::string> kManifoldParams;
 ManifoldSettings manifold_settings(const IntegratorParams& params);
@@ -36,6 +39,9 @@ ManifoldSettings manifold_settings(const IntegratorParams& params);
 bool manifold_uses_fp64(const DeviceInfo& device, const ManifoldSettings& settings);
 // The defines that compile the stage into a program: GDR_MANIFOLD, and GDR_MANIFOLD_FP64.
 Defines manifold_defines(const DeviceInfo& device, const ManifoldSettings& settings);
+// Whether the scene calls for manifold walks (it has specular chains) and in which precision they
+// would run on `device`, as one line for the log and --info.
+std::string manifold_description(const Scene& scene, const DeviceInfo& device, const ManifoldSettings& settings);
 
 class ManifoldWalks {
  public:

@@ -13,29 +13,56 @@ typedef struct ManifoldChain {
   mreal3 kept[MANIFOLD_MAX_CHAIN];            // near-specular vertices' micro-normals
 } ManifoldChain;
 
-// dx_1/dx_e (plane coordinates of x_1 per plane coordinates of x_e) at a chain whose constraints
-// hold. Returns 0 or the MANIFOLD_COUNTER_FAIL_* reason.
-inline int manifold_end_derivative(const SceneData* sd, const ManifoldChain* ch, M2* dx1) {
+// The blocks A_i, C_i of the chain's constraint matrix and the inverse pivots of its block
+// elimination (U_1 = B_1, U_i = B_i - A_i U_{i-1}^-1 C_{i-1}). Returns 0 or the
+// MANIFOLD_COUNTER_FAIL_* reason.
+inline int manifold_factor(const SceneData* sd, const ManifoldChain* ch, M2* A, M2* C, M2* Uinv) {
   const int m = ch->count;
-  M2 A[MANIFOLD_MAX_CHAIN], B[MANIFOLD_MAX_CHAIN], C[MANIFOLD_MAX_CHAIN];
+  M2 B[MANIFOLD_MAX_CHAIN];
   for (int i = 0; i < m; ++i) {
     mreal2 c;
     int r = manifold_constraint(sd, &ch->x[i], &ch->x[i + 1], &ch->x[i + 2], ch->flags[i], ch->kept[i], &c, &A[i],
                                 &B[i], &C[i]);
     if (r) return r;
   }
-  // Block elimination: U_1 = B_1, U_i = B_i - A_i U_{i-1}^-1 C_{i-1}; the right-hand side is -C_m dx_e
-  // in the last row only, so back substitution gives X_m = -U_m^-1 C_m, X_i = -U_i^-1 C_i X_{i+1}.
-  M2 Uinv[MANIFOLD_MAX_CHAIN];
   M2 U = B[0];
   for (int i = 0; i < m; ++i) {
     if (i > 0) U = m2_sub(B[i], m2_mul(m2_mul(A[i], Uinv[i - 1]), C[i - 1]));
     if (!m2_inverse(U, &Uinv[i])) return MANIFOLD_COUNTER_FAIL_SINGULAR;
   }
+  return 0;
+}
+
+// dx_1/dx_e (plane coordinates of x_1 per plane coordinates of x_e, x_0 fixed) at a chain whose
+// constraints hold: the right-hand side -C_m dx_e sits in the last row only, so back
+// substitution gives X_m = -U_m^-1 C_m, X_i = -U_i^-1 C_i X_{i+1}.
+inline int manifold_end_derivative(const SceneData* sd, const ManifoldChain* ch, M2* dx1) {
+  const int m = ch->count;
+  M2 A[MANIFOLD_MAX_CHAIN], C[MANIFOLD_MAX_CHAIN], Uinv[MANIFOLD_MAX_CHAIN];
+  int r = manifold_factor(sd, ch, A, C, Uinv);
+  if (r) return r;
   M2 X = m2_neg(m2_mul(Uinv[m - 1], C[m - 1]));
   for (int i = m - 2; i >= 0; --i) X = m2_neg(m2_mul(Uinv[i], m2_mul(C[i], X)));
   if (!isfinite(m2_det(X))) return MANIFOLD_COUNTER_FAIL_SINGULAR;
   *dx1 = X;
+  return 0;
+}
+
+// Where x_1 moves to first order when x_0 moves to `start` (x_e fixed): the right-hand side
+// -A_1 dx_0 sits in the first row only. Returns 0 or the MANIFOLD_COUNTER_FAIL_* reason.
+inline int manifold_start_move(const SceneData* sd, const ManifoldChain* ch, mreal3 start, mreal3* x1) {
+  const int m = ch->count;
+  M2 A[MANIFOLD_MAX_CHAIN], C[MANIFOLD_MAX_CHAIN], Uinv[MANIFOLD_MAX_CHAIN];
+  int r = manifold_factor(sd, ch, A, C, Uinv);
+  if (r) return r;
+  mreal3 d = start - ch->x[0].p;
+  mreal2 rhs[MANIFOLD_MAX_CHAIN];
+  rhs[0] = -m2_apply(A[0], (mreal2)(dot(d, ch->x[0].dpdu), dot(d, ch->x[0].dpdv)));
+  for (int i = 1; i < m; ++i) rhs[i] = -m2_apply(A[i], m2_apply(Uinv[i - 1], rhs[i - 1]));
+  mreal2 dx = m2_apply(Uinv[m - 1], rhs[m - 1]);
+  for (int i = m - 2; i >= 0; --i) dx = m2_apply(Uinv[i], rhs[i] - m2_apply(C[i], dx));
+  if (!isfinite(dx.x) || !isfinite(dx.y)) return MANIFOLD_COUNTER_FAIL_SINGULAR;
+  *x1 = ch->x[1].p + dx.x * ch->x[1].dpdu + dx.y * ch->x[1].dpdv;
   return 0;
 }
 

@@ -8,6 +8,7 @@
 // B_i, C_i of the chain's block-tridiagonal constraint matrix.
 #pragma once
 #include "manifold/differential.h"
+#include "shared/material_class.h"
 
 // IOR on the side of w_a and on the far side: 1 and 1 for a reflection; a transmission through a
 // dielectric of relative IOR eta (int / ext) is entered from the side of w_a (the shading normal's

@@ -27,6 +27,29 @@ inline mreal3 manifold_position(const SceneData* sd, GdrManifoldPoint q) {
   return p0 + (mreal)q.b1 * (p1 - p0) + (mreal)q.b2 * (p2 - p0);
 }
 
+inline float3 manifold_point_on(const SceneData* sd, GdrManifoldPoint q) {
+  GdrTriangle tri = sd->triangles[q.prim];
+  float3 p0 = sd->positions[tri.v[0]].xyz, p1 = sd->positions[tri.v[1]].xyz, p2 = sd->positions[tri.v[2]].xyz;
+  return p0 + q.b1 * (p1 - p0) + q.b2 * (p2 - p0);
+}
+
+// The point where the ray o + t d meets triangle `prim`'s plane, with its barycentrics computed
+// in mreal: Embree's own barycentrics are accurate to about 1e-4 only (a fast reciprocal), too
+// coarse for a walk that converges to 1e-6 of the scene's size.
+inline GdrManifoldPoint manifold_refine_hit(const SceneData* sd, uint prim, float3 of, float3 df) {
+  GdrTriangle tri = sd->triangles[prim];
+  mreal3 p0 = to_mreal3(sd->positions[tri.v[0]].xyz), p1 = to_mreal3(sd->positions[tri.v[1]].xyz),
+         p2 = to_mreal3(sd->positions[tri.v[2]].xyz);
+  mreal3 o = to_mreal3(of), d = to_mreal3(df);
+  mreal3 e1 = p1 - p0, e2 = p2 - p0, n = cross(e1, e2);
+  mreal t = dot(p0 - o, n) / dot(d, n);
+  mreal3 q = o + t * d - p0;
+  mreal d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), q1 = dot(q, e1), q2 = dot(q, e2);
+  mreal det = d11 * d22 - d12 * d12;
+  GdrManifoldPoint r = {prim, (float)((d22 * q1 - d12 * q2) / det), (float)((d11 * q2 - d12 * q1) / det)};
+  return r;
+}
+
 inline int manifold_shape(const SceneData* sd, GdrManifoldPoint q) { return sd->triangles[q.prim].shape; }
 
 inline ManifoldSurface manifold_surface(const SceneData* sd, GdrManifoldPoint q) {

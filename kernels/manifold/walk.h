@@ -37,11 +37,14 @@ inline void walk_fail(__global GdrManifoldResult* r, __global uint* counters, in
   atomic_inc(&counters[reason]);
 }
 
-inline void write_chain_ray(__global GdrRayHit* rays, __global uint* counters, mreal3 p, mreal3 ng, mreal3 d, uint id) {
+// A chain segment leaves its vertex p itself, not an origin moved off the surface: the walk aims
+// through points, and a moved origin would shift every segment. `tnear` skips the surface it
+// leaves.
+inline void write_chain_ray(__global GdrRayHit* rays, __global uint* counters, mreal3 p, mreal3 d, float tnear,
+                            uint id) {
   uint slot = atomic_inc(&counters[MANIFOLD_COUNTER_TRACING]);
   atomic_inc(&counters[MANIFOLD_COUNTER_RAYS]);
-  float3 df = to_float3(d), pf = to_float3(p);
-  write_ray_hit(&rays[slot], leaving_origin(pf, to_float3(ng), df), df, 0.0f, INFINITY, id);
+  write_ray_hit(&rays[slot], to_float3(p), to_float3(d), tnear, INFINITY, id);
 }
 
 __kernel void manifold_begin(uint count, __global GdrManifoldState* states, __global GdrManifoldResult* results,
@@ -75,15 +78,24 @@ __kernel void manifold_propose(GdrManifoldParams params, uint count, __global co
   GdrManifoldWalk W = walks[w];
   GdrManifoldState st = states[w];
   ManifoldSurface x0 = manifold_surface(&sd, walk_start(&W, &st));
+  ManifoldChain ch;
   mreal3 x1;
   st.traced = 0;
   st.trace_status = 0;
+  st.proposal_reaches = 0;
   if (!st.accepted) {
-    // First proposal: toward the base chain's x_1 (the reverse walk: toward the solution's).
-    x1 = manifold_position(&sd, st.phase ? results[w].v[0] : W.v[0].at);
+    // First proposal: the known chain (the base's; for the walk back, the solution) with its
+    // start moved to this walk's, to first order.
+    GdrManifoldPoint verts[MANIFOLD_MAX_CHAIN];
+    for (int k = 0; k < W.count; ++k) verts[k] = st.phase ? results[w].v[k] : W.v[k].at;
+    manifold_load_chain(&sd, &W, st.phase ? W.start : W.origin, verts, W.end, &ch);
+    // Where a far move's first-order guess is traced into a miss, it is shortened (beta).
+    if (manifold_start_move(&sd, &ch, x0.p, &x1)) x1 = ch.x[1].p;
+    x1 = ch.x[1].p + (mreal)st.beta * (x1 - ch.x[1].p);
   } else {
-    ManifoldChain ch;
-    manifold_load_chain(&sd, &W, walk_start(&W, &st), st.chain, st.chain[W.count], &ch);
+    // Newton step: the chain's end moves toward x_e.
+    manifold_load_chain(&sd, &W, walk_start(&W, &st), st.chain, W.end, &ch);
+    ch.x[W.count + 1].p = (mreal3)(st.chain_end[0], st.chain_end[1], st.chain_end[2]);
     M2 dx1;
     st.trace_status = manifold_end_derivative(&sd, &ch, &dx1);
     if (!st.trace_status) x1 = manifold_step(&ch, dx1, manifold_position(&sd, W.end), st.beta);
@@ -92,13 +104,13 @@ __kernel void manifold_propose(GdrManifoldParams params, uint count, __global co
     mreal3 d = x1 - x0.p;
     mreal len = length(d);
     if (!(len > (mreal)0)) st.trace_status = MANIFOLD_COUNTER_FAIL_MERGED;
-    else write_chain_ray(rays, counters, x0.p, x0.ng, d / len, w);
+    else write_chain_ray(rays, counters, x0.p, d / len, params.ray_epsilon, w);
   }
   states[w] = st;
 }
 
 // One segment of every proposal being traced: Embree's hit becomes the next chain vertex.
-__kernel void manifold_retrace(uint count, __global const GdrRayHit* rays_in, __global GdrRayHit* rays_out,
+__kernel void manifold_retrace(GdrManifoldParams params, uint count, __global const GdrRayHit* rays_in, __global GdrRayHit* rays_out,
                                __global const GdrManifoldWalk* walks, __global GdrManifoldState* states,
                                __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
@@ -109,25 +121,43 @@ __kernel void manifold_retrace(uint count, __global const GdrRayHit* rays_in, __
   __global GdrManifoldState* st = &states[w];
   __global const GdrManifoldWalk* W = &walks[w];
   int j = st->traced, m = W->count;
-  if (rh.hit.geomID == GDR_INVALID_ID) {
+  int hit = rh.hit.geomID != GDR_INVALID_ID;
+  float3 o = (float3)(rh.ray.org_x, rh.ray.org_y, rh.ray.org_z), d = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  GdrManifoldPoint q = {rh.hit.primID, rh.hit.u, rh.hit.v};
+  if (hit) q = manifold_refine_hit(&sd, rh.hit.primID, o, d);
+  if (j == m) {
+    // The last segment: where it meets x_e's surface, or else x_e's tangent plane (the walk
+    // still converges there; only the converged chain must reach x_e unblocked).
+    st->traced = j + 1;
+    if (hit && manifold_shape(&sd, q) == manifold_shape(&sd, W->end)) {
+      float3 p = manifold_point_on(&sd, q);
+      vstore3(p, 0, st->proposal_end);
+      st->proposal_reaches = 1;
+      return;
+    }
+    ManifoldSurface e = manifold_surface(&sd, W->end);
+    float3 ng = to_float3(e.ng);
+    float t = dot(to_float3(e.p) - o, ng) / dot(d, ng);
+    if (!(t > 0.0f) || !isfinite(t)) {
+      st->trace_status = MANIFOLD_COUNTER_FAIL_MISS;
+      return;
+    }
+    vstore3(o + t * d, 0, st->proposal_end);
+    return;
+  }
+  if (!hit) {
     st->trace_status = MANIFOLD_COUNTER_FAIL_MISS;
     return;
   }
-  GdrManifoldPoint q = {rh.hit.primID, rh.hit.u, rh.hit.v};
   st->proposal[j] = q;
   st->traced = j + 1;
-  if (j == m) {
-    // The last segment must reach x_e's surface unblocked.
-    if (manifold_shape(&sd, q) != manifold_shape(&sd, W->end)) st->trace_status = MANIFOLD_COUNTER_FAIL_OCCLUDED;
-    return;
-  }
   if (manifold_shape(&sd, q) != manifold_shape(&sd, W->v[j].at)) {
     st->trace_status = MANIFOLD_COUNTER_FAIL_OTHER_OBJECT;
     return;
   }
   ManifoldSurface x = manifold_surface(&sd, q);
   int flags = W->v[j].flags, transmit = (flags & MANIFOLD_VERTEX_TRANSMIT) != 0;
-  mreal3 wa = -to_mreal3((float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z));
+  mreal3 wa = -normalize(to_mreal3(d));
   mreal3 nm = x.n;
   if (!(flags & MANIFOLD_VERTEX_DELTA)) {
     nm = manifold_to_world(&x, (mreal3)(W->v[j].h[0], W->v[j].h[1], W->v[j].h[2]));
@@ -141,7 +171,7 @@ __kernel void manifold_retrace(uint count, __global const GdrRayHit* rays_in, __
     st->trace_status = MANIFOLD_COUNTER_FAIL_LOBE;
     return;
   }
-  write_chain_ray(rays_out, counters, x.p, x.ng, normalize(wb), w);
+  write_chain_ray(rays_out, counters, x.p, normalize(wb), params.ray_epsilon, w);
 }
 
 __kernel void manifold_accept(GdrManifoldParams params, uint count, __global const uint* active,
@@ -161,22 +191,34 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
   atomic_inc(&counters[MANIFOLD_COUNTER_ITERATIONS]);
   mreal3 target = manifold_position(&sd, W.end);
   if (st.trace_status || st.traced != m + 1) {
-    if (!st.accepted) {  // the projection of the first guess already fails
-      walk_fail(res, counters, st.trace_status ? st.trace_status : MANIFOLD_COUNTER_FAIL_MISS);
-      states[w] = st;
-      return;
+    if (!st.accepted) {
+      // The first guess cannot be traced: a shorter first-order move, down to none at all.
+      if (!(st.beta > 0.0f)) {
+        walk_fail(res, counters, st.trace_status ? st.trace_status : MANIFOLD_COUNTER_FAIL_MISS);
+        states[w] = st;
+        return;
+      }
+      st.beta = st.beta > 0.1f ? 0.25f * st.beta : 0.0f;
+    } else {
+      st.beta *= 0.5f;
     }
-    st.beta *= 0.5f;
   } else {
-    float error = (float)length(manifold_position(&sd, st.proposal[m]) - target);
+    float error = (float)length(to_mreal3(vload3(0, st.proposal_end)) - target);
     if (!st.accepted || error < st.error) {
-      for (int k = 0; k <= m; ++k) st.chain[k] = st.proposal[k];
-      if (st.accepted) st.beta = fmin(1.0f, 2.0f * st.beta);
+      for (int k = 0; k < m; ++k) st.chain[k] = st.proposal[k];
+      for (int k = 0; k < 3; ++k) st.chain_end[k] = st.proposal_end[k];
+      st.chain_reaches = st.proposal_reaches;
+      st.beta = st.accepted ? fmin(1.0f, 2.0f * st.beta) : 1.0f;
       st.accepted = 1;
       st.error = error;
     } else {
       st.beta *= 0.5f;
     }
+  }
+  if (st.accepted && st.error < params.tolerance && !st.chain_reaches) {
+    walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_OCCLUDED);
+    states[w] = st;
+    return;
   }
   if (st.accepted && st.error < params.tolerance) {
     // Converged: the chain ends at x_e itself.
@@ -204,7 +246,7 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
       for (int k = 0; k < m; ++k) {
         far = fmax(far, (float)length(manifold_position(&sd, st.chain[k]) - manifold_position(&sd, W.v[k].at)));
       }
-      if (!(far < 100.0f * params.tolerance)) {
+      if (!(far < params.reverse_tolerance)) {
         walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_NOT_REVERSIBLE);
       } else {
         GdrManifoldPoint base[MANIFOLD_MAX_CHAIN];

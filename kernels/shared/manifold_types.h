@@ -57,15 +57,20 @@ typedef struct GdrManifoldState {
   int accepted;      // a traced chain has been accepted in this phase
   int traced;        // vertices of the proposal traced so far
   int trace_status;  // 0, or why the proposal could not be traced (MANIFOLD_COUNTER_FAIL_*)
+  int proposal_reaches;  // the proposal's last segment hit x_e's shape (else it ends on x_e's tangent plane)
+  GdrManifoldPoint chain[MANIFOLD_MAX_CHAIN];     // the accepted chain's specular vertices
+  GdrManifoldPoint proposal[MANIFOLD_MAX_CHAIN];  // the chain being traced
+  float chain_end[3];     // where the accepted chain's last segment meets x_e's surface or tangent plane
+  int chain_reaches;
+  float proposal_end[3];
   int pad0;
-  GdrManifoldPoint chain[MANIFOLD_MAX_CHAIN + 1];     // the accepted chain's vertices, then its end
-  GdrManifoldPoint proposal[MANIFOLD_MAX_CHAIN + 1];  // the chain being traced
 } GdrManifoldState;
 
 typedef struct GdrManifoldParams {
-  float tolerance;     // world distance from x_e at which a walk has converged
-  int max_iterations;  // per walk (--manifold-iterations)
-  int pad0, pad1;
+  float tolerance;          // world distance from x_e at which a walk has converged
+  int max_iterations;       // per walk (--manifold-iterations)
+  float reverse_tolerance;  // how far from the base chain's vertices the walk back may end
+  float ray_epsilon;        // chain segments start this far from their vertex (skips its own surface)
 } GdrManifoldParams;
 
 // Counters (atomic_inc): queue sizes, then the walks' outcomes by reason.

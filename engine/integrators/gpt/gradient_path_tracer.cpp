@@ -36,12 +36,6 @@ bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt) {
   return gpt.shift == GPT_SHIFT_MANIFOLD && scene.features.specular_chains();
 }
 
-std::string gpt_manifold_reason(const Scene& scene, const GptSettings& gpt) {
-  if (gpt.shift != GPT_SHIFT_MANIFOLD) return "off (the shift is not manifold)";
-  if (!scene.features.specular_chains()) return "off (no specular chains in the scene: the manifold shift is the hybrid one)";
-  return "on (--shift manifold, and the scene has specular chains)";
-}
-
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
     : in_(in),
       gpt_(gpt),
@@ -74,7 +68,7 @@ GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings
     manifold_.emplace(in, kernels_, kProgram, capacity_ * GPT_OFFSETS, gpt.manifold);
     join_.emplace(kernels_.make(kProgram, "gpt_manifold_join"));
   }
-  if (gpt.shift == GPT_SHIFT_MANIFOLD) log::info("manifold walks: ", gpt_manifold_reason(in.scene, gpt));
+  if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
 }
 
 GdrGptParams GradientPathTracer::params(const RenderSettings& settings, uint32_t sample, uint32_t first,

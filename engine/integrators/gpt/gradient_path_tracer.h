@@ -77,8 +77,7 @@ class GradientPathTracer : public Integrator {
   std::optional<Kernel> join_;
 };
 
-// Whether --shift manifold walks in this scene, and why (for the log and --info).
+// Whether --shift manifold walks in this scene (it has specular chains).
 bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt);
-std::string gpt_manifold_reason(const Scene& scene, const GptSettings& gpt);
 
 }  // namespace gdr
