@@ -12,6 +12,7 @@
 #include "support/envmap_scene.h"
 #include "support/render.h"
 #include "support/statistics.h"
+#include "support/test_scenes.h"
 
 namespace gdr {
 namespace {
@@ -144,12 +145,17 @@ TEST(GptUnbiased, GlossyPlatesReplay) { expect_unbiased("glossy-plates.xml", GPT
 TEST(GptUnbiased, MirrorAndGlassHybrid) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_HYBRID); }
 TEST(GptUnbiased, MirrorAndGlassReplay) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_REPLAY); }
 TEST(GptUnbiased, MirrorAndGlassManifold) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_MANIFOLD); }
+TEST(GptUnbiased, GlassBoxManifold) { expect_unbiased("glass-box.xml", GPT_SHIFT_MANIFOLD); }
 
 }  // namespace
 }  // namespace gdr
 
 namespace gdr {
 namespace {
+// Most of this scene's gradients come through the manifold shift.
+TEST(GptUnbiased, GlassCausticManifold) {
+  expect_unbiased(test::glass_caustic_scene(), "glass caustic scene", GPT_SHIFT_MANIFOLD, 32);
+}
 TEST(GptUnbiased, EnvironmentMapHybrid) { expect_unbiased(test::envmap_scene(), "envmap scene", GPT_SHIFT_HYBRID); }
 TEST(GptUnbiased, EnvironmentMapReplay) { expect_unbiased(test::envmap_scene(), "envmap scene", GPT_SHIFT_REPLAY); }
 // Smooth plastic: its delta coating lobe makes its vertices glossy for the shifts, yet its

@@ -224,4 +224,25 @@ inline Scene coarse_smooth_sphere_scene() {
   return b.finish(camera_looking_z(0.0f, 0.3f, 0.5f, 45.0f, 24));
 }
 
+// A caustic: an area light above the camera's view shines through a glass sphere (IOR 1.5,
+// smooth normals) onto a diffuse wall that the camera faces, 24 pixels wide. The caustic's light
+// reaches the wall only along specular chains (wall -> sphere -> sphere -> light), whose
+// gradients the manifold shift builds.
+inline Scene glass_caustic_scene() {
+  SceneBuilder b;
+  int white = b.material(diffuse_material(0.8f), "white");
+  int glass = b.material(dielectric_material(BSDF_DIELECTRIC, 1.5f), "glass");
+  MeshData sphere = make_sphere(24, 48);
+  for (size_t v = 0; v < sphere.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) sphere.positions[3 * v + a] *= 0.9f;
+    sphere.positions[3 * v + 1] += 0.3f;
+    sphere.positions[3 * v + 2] += 3.0f;
+  }
+  b.shape(sphere, glass, 0.0f, "sphere");
+  b.shape(quad_mesh({-3, -3, 4}, {-3, 3, 4}, {3, 3, 4}, {3, -3, 4}), white, 0.0f, "wall");
+  b.shape(quad_mesh({-0.6f, 0.8f, 1.5f}, {0.6f, 0.8f, 1.5f}, {0.6f, 2.0f, 1.5f}, {-0.6f, 2.0f, 1.5f}), white, 6.0f,
+          "light");
+  return b.finish(camera_looking_z(0.0f, 0.0f, 0.0f, 45.0f, 24));
+}
+
 }  // namespace gdr::test
