@@ -74,6 +74,7 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
   ScopedTimer timer(in_.context.stats(), "render/manifold");
   counters_.reset();
   begin_.args(count, states_, results, active_[0], counters_.buffer()).run(count);
+  counters_.read();
   cl_uint active = count;
   for (int cur = 0; active > 0; cur = 1 - cur) {
     counters_.reset();

@@ -263,7 +263,7 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
       states[w] = st;
       return;
     }
-  } else if (st.iterations >= params.max_iterations || st.beta < 1.0f / 1024.0f) {
+  } else if (st.iterations >= params.max_iterations || (st.accepted && st.beta < 1.0f / 1024.0f)) {
     walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_NO_CONVERGENCE);
     states[w] = st;
     return;
