@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "render/manifold_walks.h"
@@ -45,7 +47,7 @@ inline GdrManifoldPoint locate(const Scene& s, int shape, V3 p) {
       best = GdrManifoldPoint{cl_uint(t), float(b1), float(b2)};
     }
   }
-  EXPECT_LT(best_d, 1e-2) << "no triangle of shape " << shape << " holds the point";
+  if (!(best_d < 1e-2)) throw std::runtime_error("no triangle of shape " + std::to_string(shape) + " holds the point");
   return best;
 }
 
@@ -69,14 +71,14 @@ struct ChainScene {
   int start_shape = -1, end_shape = -1, specular_shape = -1;
 };
 
-// The solver stage on a chain scene, for up to 64 walks at once. With `stats`, on a context of its
+// The solver stage on a chain scene, for up to `capacity` walks at once. With `stats`, on a context of its
 // own that records into them (the walks' counters among them, after report()).
 struct Solver {
-  explicit Solver(const ChainScene& s, const ManifoldSettings& settings, Stats* stats = nullptr)
+  explicit Solver(const ChainScene& s, const ManifoldSettings& settings, Stats* stats = nullptr, size_t capacity = 64)
       : own(stats ? std::make_unique<Context>(select_device(""), stats) : nullptr),
         on_device(s.scene, stats, own ? *own : default_context()),
         kernels(on_device.context, s.scene, manifold_defines(on_device.context.device(), settings)),
-        walks(on_device.inputs(), kernels, "tests/manifold_test.cl", 64, settings) {}
+        walks(on_device.inputs(), kernels, "tests/manifold_test.cl", capacity, settings) {}
 
   std::vector<GdrManifoldResult> solve(const std::vector<GdrManifoldWalk>& w) {
     Buffer<GdrManifoldWalk> in(on_device.context, w);
@@ -162,6 +164,24 @@ inline std::vector<V3> slab_points(V3 a, V3 e) {
   V3 p1 = add(a, add(mul(dir, 0.5 * std::tan(ta)), V3{0, 0.5, 0}));
   V3 p2 = add(p1, add(mul(dir, tg), V3{0, 1.0, 0}));
   return {p1, p2};
+}
+
+// Two glass slabs (IOR 1.5) between y = 0.5 and 1, and 1.5 and 2; chains of four refractions from
+// y = 0 to y = 3.
+inline ChainScene double_slab_setup() {
+  SceneBuilder b;
+  int white = b.material(diffuse_material(0.5f), "white");
+  int glass = b.material(dielectric_material(BSDF_DIELECTRIC, float(kEta)), "glass");
+  ChainScene s;
+  MeshData slabs = box_mesh({-8, 0.5f, -8}, {8, 1, 8}), upper = box_mesh({-8, 1.5f, -8}, {8, 2, 8});
+  size_t base = slabs.vertex_count();
+  slabs.positions.insert(slabs.positions.end(), upper.positions.begin(), upper.positions.end());
+  for (auto i : upper.indices) slabs.indices.push_back(decltype(i)(i + base));
+  s.specular_shape = b.shape(slabs, glass, 0, "slabs");
+  s.start_shape = b.shape(plate({-1.5, 0, 0}, true), white, 0, "start");
+  s.end_shape = b.shape(plate({1.5, 3, 0}, false), white, 0, "end");
+  s.scene = b.finish(camera_looking_z(0, 1, -9, 30, 8));
+  return s;
 }
 
 // A glass sphere (IOR 1.5, radius 1, smooth normals) at the origin; chains from y = -3 to y = 3.
