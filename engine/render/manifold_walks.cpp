@@ -6,6 +6,14 @@
 
 namespace gdr {
 
+// The walks' layouts, shared with the kernels (4-byte members only, so both sides agree).
+static_assert(sizeof(GdrManifoldPoint) == 12, "GdrManifoldPoint layout changed");
+static_assert(sizeof(GdrManifoldVertex) == 32, "GdrManifoldVertex layout changed");
+static_assert(sizeof(GdrManifoldWalk) == 48 + 32 * MANIFOLD_MAX_CHAIN, "GdrManifoldWalk layout changed");
+static_assert(sizeof(GdrManifoldResult) == 16 + 12 * MANIFOLD_MAX_CHAIN, "GdrManifoldResult layout changed");
+static_assert(sizeof(GdrManifoldState) == 64 + 24 * MANIFOLD_MAX_CHAIN, "GdrManifoldState layout changed");
+static_assert(sizeof(GdrManifoldParams) == 16, "GdrManifoldParams layout changed");
+
 const std::vector<std::string> kManifoldParams = {"manifold_iterations", "manifold_tolerance", "manifold_precision"};
 
 ManifoldSettings manifold_settings(const IntegratorParams& params) {

@@ -5,6 +5,9 @@
 #include "render/wavefront/chunks.h"
 
 namespace gdr {
+
+static_assert(sizeof(GptChain) == 28 + 40 * MANIFOLD_MAX_CHAIN, "GptChain layout changed");
+
 namespace {
 
 // Groups in flight per chunk: a group holds five paths (about 1.5 KiB of queues and state), and
