@@ -112,10 +112,6 @@ inline float chain_half_jacobian(const SceneData* sd, GdrManifoldPoint at, int f
   return half_jacobian_refract(wa, wb, h, eb / ea);
 }
 
-inline float3 manifold_point_position(const SceneData* sd, GdrManifoldPoint q) {
-  return surface_at(sd, q.prim, q.b1, q.b2).p;
-}
-
 // A solved walk becomes the offset's prefix up to x_c: its own BSDF toward the new chain, the
 // chain's lobes, and the Jacobian g_walk / g_origin (times the half-vector Jacobians of
 // near-specular vertices), over the base's pdfs; the base's Russian roulette carried over.
@@ -138,12 +134,12 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
   if (!reason) {
     ShiftVertex y = shift_vertex_at(&s, o.prim, o.b1, o.b2, -vload3(0, o.dir), params.shift_threshold);
     off[0] = y.su.p;
-    bp[0] = manifold_point_position(&s, c.origin);
+    bp[0] = manifold_point_on(&s, c.origin);
     for (int k = 0; k < m; ++k) {
-      off[k + 1] = manifold_point_position(&s, R.v[k]);
-      bp[k + 1] = manifold_point_position(&s, W.v[k].at);
+      off[k + 1] = manifold_point_on(&s, R.v[k]);
+      bp[k + 1] = manifold_point_on(&s, W.v[k].at);
     }
-    off[m + 1] = bp[m + 1] = manifold_point_position(&s, W.end);
+    off[m + 1] = bp[m + 1] = manifold_point_on(&s, W.end);
     float3 wi = normalize(off[1] - off[0]);
     float3 wil = frame_to_local(&y.frame, wi);
     float3 f = bsdf_eval(&y.b, y.wo, wil);
