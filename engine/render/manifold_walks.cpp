@@ -11,7 +11,6 @@ static_assert(sizeof(GdrManifoldPoint) == 12, "GdrManifoldPoint layout changed")
 static_assert(sizeof(GdrManifoldVertex) == 32, "GdrManifoldVertex layout changed");
 static_assert(sizeof(GdrManifoldWalk) == 48 + 32 * MANIFOLD_MAX_CHAIN, "GdrManifoldWalk layout changed");
 static_assert(sizeof(GdrManifoldResult) == 16 + 12 * MANIFOLD_MAX_CHAIN, "GdrManifoldResult layout changed");
-static_assert(sizeof(GdrManifoldState) == 64 + 24 * MANIFOLD_MAX_CHAIN, "GdrManifoldState layout changed");
 static_assert(sizeof(GdrManifoldParams) == 16, "GdrManifoldParams layout changed");
 
 const std::vector<std::string> kManifoldParams = {"manifold_iterations", "manifold_tolerance", "manifold_precision"};
@@ -65,7 +64,7 @@ ManifoldWalks::ManifoldWalks(const RenderInputs& in, const KernelFactory& kernel
       propose_(kernels.make(program, "manifold_propose")),
       retrace_(kernels.make(program, "manifold_retrace")),
       accept_(kernels.make(program, "manifold_accept")),
-      states_(in.context, capacity),
+      states_(in.context, capacity * MANIFOLD_STATE_WORDS),
       active_{Buffer<cl_uint>(in.context, capacity), Buffer<cl_uint>(in.context, capacity)},
       rays_{Buffer<GdrRayHit>(in.context, capacity, kRayQueueFlags), Buffer<GdrRayHit>(in.context, capacity, kRayQueueFlags)},
       counters_(in.context, GDR_COUNTER_NAMES(MANIFOLD_COUNTERS)) {
@@ -81,12 +80,12 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
   if (count > capacity_) throw Error("manifold walks: " + std::to_string(count) + " walks exceed the stage's capacity");
   ScopedTimer timer(in_.context.stats(), "render/manifold");
   counters_.reset();
-  begin_.args(count, states_, results, active_[0], counters_.buffer()).run(count);
+  begin_.args(count, states_, cl_uint(capacity_), results, active_[0], counters_.buffer()).run(count);
   counters_.read();
   cl_uint active = count;
   for (int cur = 0; active > 0; cur = 1 - cur) {
     counters_.reset();
-    propose_.args(params_, active, active_[cur], walks, states_, results, rays_[0], counters_.buffer(), scene,
+    propose_.args(params_, active, active_[cur], walks, states_, cl_uint(capacity_), results, rays_[0], counters_.buffer(), scene,
                   in_.device_scene)
         .run(active);
     cl_uint rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
@@ -95,12 +94,12 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
       Buffer<GdrRayHit>& in = rays_[round % 2];
       intersect(in_.embree, in, rays, false, "manifold");
       counters_.reset();
-      retrace_.args(params_, rays, in, rays_[1 - round % 2], walks, states_, counters_.buffer(), scene, in_.device_scene)
+      retrace_.args(params_, rays, in, rays_[1 - round % 2], walks, states_, cl_uint(capacity_), counters_.buffer(), scene, in_.device_scene)
           .run(rays);
       rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
     }
     counters_.reset();
-    accept_.args(params_, active, active_[cur], active_[1 - cur], walks, states_, results, counters_.buffer(), scene,
+    accept_.args(params_, active, active_[cur], active_[1 - cur], walks, states_, cl_uint(capacity_), results, counters_.buffer(), scene,
                  in_.device_scene)
         .run(active);
     active = counters_.read()[MANIFOLD_COUNTER_ACTIVE];

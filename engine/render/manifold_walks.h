@@ -62,7 +62,7 @@ class ManifoldWalks {
   size_t capacity_;
   GdrManifoldParams params_{};
   Kernel begin_, propose_, retrace_, accept_;
-  Buffer<GdrManifoldState> states_;
+  Buffer<cl_uint> states_;  // MANIFOLD_STATE_WORDS fields of `capacity_` walks each
   Buffer<cl_uint> active_[2];
   Buffer<GdrRayHit> rays_[2];
   DeviceCounters counters_;

@@ -13,6 +13,7 @@
 #pragma once
 #include "core/ray_queue.h"
 #include "manifold/chain.h"
+#include "manifold/walk_state.h"
 #include "path/scene.h"
 
 // The chain from `start` through the given specular vertices to `end`, with the walk's constraints.
@@ -28,7 +29,7 @@ inline void manifold_load_chain(const SceneData* sd, const GdrManifoldWalk* w, G
   ch->x[w->count + 1] = manifold_surface(sd, end);
 }
 
-inline GdrManifoldPoint walk_start(const GdrManifoldWalk* w, const GdrManifoldState* st) {
+inline GdrManifoldPoint walk_start(const GdrManifoldWalk* w, const ManifoldState* st) {
   return st->phase ? w->origin : w->start;
 }
 
@@ -47,19 +48,16 @@ inline void write_chain_ray(__global GdrRayHit* rays, __global uint* counters, m
   write_ray_hit(&rays[slot], to_float3(p), to_float3(d), tnear, INFINITY, id);
 }
 
-__kernel void manifold_begin(uint count, __global GdrManifoldState* states, __global GdrManifoldResult* results,
+__kernel void manifold_begin(uint count, __global uint* states, uint capacity, __global GdrManifoldResult* results,
                              __global uint* active, __global uint* counters) {
   uint w = get_global_id(0);
   if (w >= count) return;
-  GdrManifoldState st;
-  st.phase = 0;
-  st.iterations = 0;
-  st.beta = 1.0f;
-  st.error = INFINITY;
-  st.accepted = 0;
-  st.traced = 0;
-  st.trace_status = 0;
-  states[w] = st;
+  ManifoldStateRef s = manifold_state_ref(states, capacity, w);
+  set_state_int(s, MANIFOLD_STATE_PHASE, 0);
+  set_state_int(s, MANIFOLD_STATE_ITERATIONS, 0);
+  set_state_float(s, MANIFOLD_STATE_BETA, 1.0f);
+  set_state_float(s, MANIFOLD_STATE_ERROR, INFINITY);
+  set_state_int(s, MANIFOLD_STATE_ACCEPTED, 0);
   results[w].status = 0;
   results[w].iterations = 0;
   results[w].g_walk = results[w].g_origin = 0.0f;
@@ -68,7 +66,7 @@ __kernel void manifold_begin(uint count, __global GdrManifoldState* states, __gl
 }
 
 __kernel void manifold_propose(GdrManifoldParams params, uint count, __global const uint* active,
-                               __global const GdrManifoldWalk* walks, __global GdrManifoldState* states,
+                               __global const GdrManifoldWalk* walks, __global uint* states, uint capacity,
                                __global const GdrManifoldResult* results, __global GdrRayHit* rays,
                                __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
@@ -76,7 +74,9 @@ __kernel void manifold_propose(GdrManifoldParams params, uint count, __global co
   SceneData sd = path_scene(&scene_params, SCENE_DATA_NAMES);
   uint w = active[i];
   GdrManifoldWalk W = walks[w];
-  GdrManifoldState st = states[w];
+  ManifoldStateRef s = manifold_state_ref(states, capacity, w);
+  ManifoldState st;
+  load_state(s, W.count, 0, &st);
   ManifoldSurface x0 = manifold_surface(&sd, walk_start(&W, &st));
   ManifoldChain ch;
   mreal3 x1;
@@ -106,21 +106,21 @@ __kernel void manifold_propose(GdrManifoldParams params, uint count, __global co
     if (!(len > (mreal)0)) st.trace_status = MANIFOLD_COUNTER_FAIL_MERGED;
     else write_chain_ray(rays, counters, x0.p, d / len, params.ray_epsilon, w);
   }
-  states[w] = st;
+  store_trace(s, &st);
 }
 
 // One segment of every proposal being traced: Embree's hit becomes the next chain vertex.
 __kernel void manifold_retrace(GdrManifoldParams params, uint count, __global const GdrRayHit* rays_in, __global GdrRayHit* rays_out,
-                               __global const GdrManifoldWalk* walks, __global GdrManifoldState* states,
+                               __global const GdrManifoldWalk* walks, __global uint* states, uint capacity,
                                __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
   if (i >= count) return;
   SceneData sd = path_scene(&scene_params, SCENE_DATA_NAMES);
   GdrRayHit rh = rays_in[i];
   uint w = rh.ray.id;
-  __global GdrManifoldState* st = &states[w];
+  ManifoldStateRef s = manifold_state_ref(states, capacity, w);
   __global const GdrManifoldWalk* W = &walks[w];
-  int j = st->traced, m = W->count;
+  int j = state_int(s, MANIFOLD_STATE_TRACED), m = W->count;
   int hit = rh.hit.geomID != GDR_INVALID_ID;
   float3 o = (float3)(rh.ray.org_x, rh.ray.org_y, rh.ray.org_z), d = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
   GdrManifoldPoint q = {rh.hit.primID, rh.hit.u, rh.hit.v};
@@ -128,31 +128,30 @@ __kernel void manifold_retrace(GdrManifoldParams params, uint count, __global co
   if (j == m) {
     // The last segment: where it meets x_e's surface, or else x_e's tangent plane (the walk
     // still converges there; only the converged chain must reach x_e unblocked).
-    st->traced = j + 1;
+    set_state_int(s, MANIFOLD_STATE_TRACED, j + 1);
     if (hit && manifold_shape(&sd, q) == manifold_shape(&sd, W->end)) {
-      float3 p = manifold_point_on(&sd, q);
-      vstore3(p, 0, st->proposal_end);
-      st->proposal_reaches = 1;
+      set_state_float3(s, MANIFOLD_STATE_PROPOSAL_END, manifold_point_on(&sd, q));
+      set_state_int(s, MANIFOLD_STATE_PROPOSAL_REACHES, 1);
       return;
     }
     ManifoldSurface e = manifold_surface(&sd, W->end);
     float3 ng = to_float3(e.ng);
     float t = dot(to_float3(e.p) - o, ng) / dot(d, ng);
     if (!(t > 0.0f) || !isfinite(t)) {
-      st->trace_status = MANIFOLD_COUNTER_FAIL_MISS;
+      set_state_int(s, MANIFOLD_STATE_TRACE_STATUS, MANIFOLD_COUNTER_FAIL_MISS);
       return;
     }
-    vstore3(o + t * d, 0, st->proposal_end);
+    set_state_float3(s, MANIFOLD_STATE_PROPOSAL_END, o + t * d);
     return;
   }
   if (!hit) {
-    st->trace_status = MANIFOLD_COUNTER_FAIL_MISS;
+    set_state_int(s, MANIFOLD_STATE_TRACE_STATUS, MANIFOLD_COUNTER_FAIL_MISS);
     return;
   }
-  st->proposal[j] = q;
-  st->traced = j + 1;
+  set_state_point(s, MANIFOLD_STATE_PROPOSAL + 3 * j, q);
+  set_state_int(s, MANIFOLD_STATE_TRACED, j + 1);
   if (manifold_shape(&sd, q) != manifold_shape(&sd, W->v[j].at)) {
-    st->trace_status = MANIFOLD_COUNTER_FAIL_OTHER_OBJECT;
+    set_state_int(s, MANIFOLD_STATE_TRACE_STATUS, MANIFOLD_COUNTER_FAIL_OTHER_OBJECT);
     return;
   }
   ManifoldSurface x = manifold_surface(&sd, q);
@@ -168,7 +167,7 @@ __kernel void manifold_retrace(GdrManifoldParams params, uint count, __global co
   // The lobe must leave on the side it did on the base chain.
   ok = ok && (dot(wa, x.ng) * dot(wb, x.ng) > (mreal)0) == !transmit;
   if (!ok) {
-    st->trace_status = MANIFOLD_COUNTER_FAIL_LOBE;
+    set_state_int(s, MANIFOLD_STATE_TRACE_STATUS, MANIFOLD_COUNTER_FAIL_LOBE);
     return;
   }
   write_chain_ray(rays_out, counters, x.p, normalize(wb), params.ray_epsilon, w);
@@ -176,16 +175,18 @@ __kernel void manifold_retrace(GdrManifoldParams params, uint count, __global co
 
 __kernel void manifold_accept(GdrManifoldParams params, uint count, __global const uint* active,
                               __global uint* next_active, __global const GdrManifoldWalk* walks,
-                              __global GdrManifoldState* states, __global GdrManifoldResult* results,
+                              __global uint* states, uint capacity, __global GdrManifoldResult* results,
                               __global uint* counters, GdrPtParams scene_params, SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
   if (i >= count) return;
   SceneData sd = path_scene(&scene_params, SCENE_DATA_NAMES);
   uint w = active[i];
   GdrManifoldWalk W = walks[w];
-  GdrManifoldState st = states[w];
-  __global GdrManifoldResult* res = &results[w];
   const int m = W.count;
+  ManifoldStateRef s = manifold_state_ref(states, capacity, w);
+  ManifoldState st;
+  load_state(s, m, 1, &st);
+  __global GdrManifoldResult* res = &results[w];
   st.iterations += 1;
   res->iterations += 1;
   atomic_inc(&counters[MANIFOLD_COUNTER_ITERATIONS]);
@@ -195,7 +196,7 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
       // The first guess cannot be traced: a shorter first-order move, down to none at all.
       if (!(st.beta > 0.0f)) {
         walk_fail(res, counters, st.trace_status ? st.trace_status : MANIFOLD_COUNTER_FAIL_MISS);
-        states[w] = st;
+        store_state(s, m, &st);
         return;
       }
       st.beta = st.beta > 0.1f ? 0.25f * st.beta : 0.0f;
@@ -217,7 +218,7 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
   }
   if (st.accepted && st.error < params.tolerance && !st.chain_reaches) {
     walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_OCCLUDED);
-    states[w] = st;
+    store_state(s, m, &st);
     return;
   }
   if (st.accepted && st.error < params.tolerance) {
@@ -228,7 +229,7 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
     int r = manifold_end_derivative(&sd, &ch, &dx1);
     if (r) {
       walk_fail(res, counters, r);
-      states[w] = st;
+      store_state(s, m, &st);
       return;
     }
     float g = (float)manifold_geometry(&ch, dx1);
@@ -260,14 +261,14 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
           atomic_inc(&counters[MANIFOLD_COUNTER_SOLVED]);
         }
       }
-      states[w] = st;
+      store_state(s, m, &st);
       return;
     }
   } else if (st.iterations >= params.max_iterations || (st.accepted && st.beta < 1.0f / 1024.0f)) {
     walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_NO_CONVERGENCE);
-    states[w] = st;
+    store_state(s, m, &st);
     return;
   }
-  states[w] = st;
+  store_state(s, m, &st);
   next_active[atomic_inc(&counters[MANIFOLD_COUNTER_ACTIVE])] = w;
 }

@@ -48,23 +48,25 @@ typedef struct GdrManifoldResult {
   GdrManifoldPoint v[MANIFOLD_MAX_CHAIN];  // the new chain's specular vertices
 } GdrManifoldResult;
 
-// Per-walk iteration state.
-typedef struct GdrManifoldState {
-  int phase;         // 0: the walk from start; 1: the reverse walk from origin
-  int iterations;    // of this phase
-  float beta;        // step size: starts at 1, halved on a rejected step, doubled on an accepted one (capped at 1)
-  float error;       // the accepted chain's distance from x_e
-  int accepted;      // a traced chain has been accepted in this phase
-  int traced;        // vertices of the proposal traced so far
-  int trace_status;  // 0, or why the proposal could not be traced (MANIFOLD_COUNTER_FAIL_*)
-  int proposal_reaches;  // the proposal's last segment hit x_e's shape (else it ends on x_e's tangent plane)
-  GdrManifoldPoint chain[MANIFOLD_MAX_CHAIN];     // the accepted chain's specular vertices
-  GdrManifoldPoint proposal[MANIFOLD_MAX_CHAIN];  // the chain being traced
-  float chain_end[3];     // where the accepted chain's last segment meets x_e's surface or tangent plane
-  int chain_reaches;
-  float proposal_end[3];
-  int pad0;
-} GdrManifoldState;
+// Per-walk iteration state, as structure of arrays: word f of walk w lies at state[f * capacity + w],
+// so neighbouring work items read each field from one contiguous run (kernels/manifold/walk_state.h
+// gathers and scatters it). Points take three words (prim, b1, b2), positions three floats.
+enum {
+  MANIFOLD_STATE_PHASE,             // 0: the walk from start; 1: the reverse walk from origin
+  MANIFOLD_STATE_ITERATIONS,        // of this phase
+  MANIFOLD_STATE_BETA,              // step size: starts at 1, halved on a rejected step, doubled on an accepted one (capped at 1)
+  MANIFOLD_STATE_ERROR,             // the accepted chain's distance from x_e
+  MANIFOLD_STATE_ACCEPTED,          // a traced chain has been accepted in this phase
+  MANIFOLD_STATE_CHAIN_REACHES,     // the accepted chain's last segment hit x_e's shape
+  MANIFOLD_STATE_TRACED,            // vertices of the proposal traced so far
+  MANIFOLD_STATE_TRACE_STATUS,      // 0, or why the proposal could not be traced (MANIFOLD_COUNTER_FAIL_*)
+  MANIFOLD_STATE_PROPOSAL_REACHES,  // the proposal's last segment hit x_e's shape (else it ends on x_e's tangent plane)
+  MANIFOLD_STATE_CHAIN_END,         // where the accepted chain's last segment meets x_e's surface or tangent plane
+  MANIFOLD_STATE_PROPOSAL_END = MANIFOLD_STATE_CHAIN_END + 3,
+  MANIFOLD_STATE_CHAIN = MANIFOLD_STATE_PROPOSAL_END + 3,      // the accepted chain's specular vertices
+  MANIFOLD_STATE_PROPOSAL = MANIFOLD_STATE_CHAIN + 3 * MANIFOLD_MAX_CHAIN,  // the chain being traced
+  MANIFOLD_STATE_WORDS = MANIFOLD_STATE_PROPOSAL + 3 * MANIFOLD_MAX_CHAIN
+};
 
 typedef struct GdrManifoldParams {
   float tolerance;          // world distance from x_e at which a walk has converged
