@@ -1,0 +1,41 @@
+// The two mutations of primary-sample-space MLT (Kelemen et al. 2002; pbrt-v4's MLTSampler):
+// a large step draws a fresh uniform state; a small step moves every dimension by a Gaussian of
+// standard deviation sigma, wrapped around [0, 1). Both are symmetric (the proposal density from
+// x to y equals that from y to x), so the acceptance is min(1, f(y) / f(x)).
+#pragma once
+#include "core/rng.h"
+#include "shared/mlt_types.h"
+
+// Blocks of the chains' random numbers for one step (rng_block's last argument): the step kind
+// and the acceptance, then two dimensions per block of four uniforms.
+#define MLT_BLOCK_CONTROL 0u
+#define MLT_BLOCK_DIMS 1u
+
+// x + delta on the circle [0, 1): the result never reaches 1 (a float sum can round up to it).
+inline float mlt_wrap(float x) {
+  x -= floor(x);
+  return x < 1.0f ? x : 0.0f;
+}
+
+// Two independent standard normals from four uniforms (Box-Muller on the first two).
+inline float2 mlt_normals(float4 u) {
+  float r = sqrt(-2.0f * log(fmax(1.0f - u.x, 1e-30f)));
+  float phi = 2.0f * M_PI_F * u.y;
+  return (float2)(r * cos(phi), r * sin(phi));
+}
+
+// Whether chain c's step is a large one, and the uniform that decides its acceptance.
+inline int mlt_is_large_step(const GdrMltParams* p, uint c) {
+  return rng_block(p->seed, c, p->iteration, MLT_BLOCK_CONTROL).x < p->large_step;
+}
+inline float mlt_accept_uniform(const GdrMltParams* p, uint c) {
+  return rng_block(p->seed, c, p->iteration, MLT_BLOCK_CONTROL).y;
+}
+
+// Dimension d of chain c's proposal from its current value x.
+inline float mlt_mutate(const GdrMltParams* p, uint c, uint d, int large, float x) {
+  float4 u = rng_block(p->seed, c, p->iteration, MLT_BLOCK_DIMS + d / 2u);
+  if (large) return (d & 1u) ? u.w : u.z;
+  float2 n = mlt_normals(u);
+  return mlt_wrap(x + p->sigma * ((d & 1u) ? n.y : n.x));
+}
