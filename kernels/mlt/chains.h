@@ -15,9 +15,12 @@ __kernel void mlt_propose(GdrMltParams p, __global const float* current, __globa
   int is_large = mlt_is_large_step(&p, c);
   large[c] = (uint)is_large;
   atomic_inc(&counters[is_large ? MLT_COUNTER_LARGE_STEPS : MLT_COUNTER_SMALL_STEPS]);
-  for (uint d = 0; d < p.dims; ++d) {
-    size_t i = (size_t)d * p.chains + c;
-    proposed[i] = mlt_mutate(&p, c, d, is_large, current[i]);
+  for (uint d = 0; d < p.dims; d += 2) {
+    size_t i = (size_t)d * p.chains + c, j = i + p.chains;
+    int pair = d + 1 < p.dims;  // an odd last dimension has no partner
+    float2 y = mlt_mutate_pair(&p, c, d / 2, is_large, (float2)(current[i], pair ? current[j] : 0.0f));
+    proposed[i] = y.x;
+    if (pair) proposed[j] = y.y;
   }
 }
 

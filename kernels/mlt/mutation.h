@@ -32,10 +32,11 @@ inline float mlt_accept_uniform(const GdrMltParams* p, uint c) {
   return rng_block(p->seed, c, p->iteration, MLT_BLOCK_CONTROL).y;
 }
 
-// Dimension d of chain c's proposal from its current value x.
-inline float mlt_mutate(const GdrMltParams* p, uint c, uint d, int large, float x) {
-  float4 u = rng_block(p->seed, c, p->iteration, MLT_BLOCK_DIMS + d / 2u);
-  if (large) return (d & 1u) ? u.w : u.z;
+// Dimensions 2k and 2k + 1 of chain c's proposal from their current values x (one block of
+// random numbers and one Box-Muller transform serve both).
+inline float2 mlt_mutate_pair(const GdrMltParams* p, uint c, uint k, int large, float2 x) {
+  float4 u = rng_block(p->seed, c, p->iteration, MLT_BLOCK_DIMS + k);
+  if (large) return u.zw;
   float2 n = mlt_normals(u);
-  return mlt_wrap(x + p->sigma * ((d & 1u) ? n.y : n.x));
+  return (float2)(mlt_wrap(x.x + p->sigma * n.x), mlt_wrap(x.y + p->sigma * n.y));
 }

@@ -2,7 +2,8 @@
 // subpath per pixel): whole passes of each technique (light subpaths per second, with camera
 // connections, vertex connections, merges and the hash grid's build as rates from the render's
 // own counters), the splat film's gather alone (slots per second) for the slot counts of a pass,
-// and the device primitives the grid is built with (scan, sort by key: items per second).
+// and the device primitives the grid is built with and queues are compacted with (scan,
+// compaction, sort by key: items per second).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -100,6 +101,25 @@ void BM_DeviceScan(benchmark::State& state) {
   state.SetLabel("uint items on " + ctx.device().name);
 }
 BENCHMARK(BM_DeviceScan)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Compaction of 2^20 items, half of them flagged at random (the shape of a queue after a bounce).
+void BM_DeviceCompact(benchmark::State& state) {
+  Context& ctx = test::default_context();
+  DevicePrimitives prim(ctx);
+  const size_t n = size_t(1) << 20;
+  std::mt19937 rng(1);
+  std::vector<cl_uint> f(n), items(n);
+  for (size_t i = 0; i < n; ++i) {
+    f[i] = rng() & 1u;
+    items[i] = cl_uint(i);
+  }
+  Buffer<cl_uint> flags(ctx, f), in(ctx, items), offsets(ctx, n), out(ctx, n);
+  prim.compact(flags, in, n, offsets, out);  // untimed: the first launch compiles
+  for (auto _ : state) prim.compact(flags, in, n, offsets, out);
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(n));
+  state.SetLabel("uint items, half kept, on " + ctx.device().name);
+}
+BENCHMARK(BM_DeviceCompact)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DeviceSortByKey(benchmark::State& state) {
   Context& ctx = test::default_context();
