@@ -4,7 +4,8 @@
 // mix. Each chain contributes only its final state, so the samples are independent and
 // Pearson's chi-square applies: 2^16 chains, 16 x 16 cells, host seed 7, device seed 11,
 // false-positive rate 1e-3 per case. Also: states stay in [0, 1), the step counts add up, and
-// large steps come with the asked-for probability.
+// large steps come with the asked-for probability; with an odd dimension count, the last
+// dimension is mutated like the others.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -150,6 +151,40 @@ TEST(MarkovChains, AcceptingEveryProposalIsDetected) {
   }
   test::Chi2Result r = test::chi2_test(observed, expected_counts(double(kChains)), double(kChains));
   EXPECT_LT(r.p_value, 1e-6) << "chi2 = " << r.statistic << ": a chain that ignores the target passed";
+}
+
+// Three dimensions (the last without a partner), a constant target (every proposal accepted):
+// one large step leaves every dimension uniform (mean 1/2, |z| < 4), and one small step moves
+// every dimension by a Gaussian of sigma (mean |step| = sigma sqrt(2 / pi), |z| < 4).
+TEST(MarkovChains, EveryDimensionIsMutatedWithAnOddCount) {
+  Context& ctx = test::default_context();
+  Scene scene = test::furnace_scene(0.5f, 1.0f, 8);
+  KernelFactory kernels(ctx, scene);
+  const size_t n = kChains, dims = 3;
+  const float sigma = 0.01f;
+  for (float large_step : {1.0f, 0.0f}) {
+    MarkovChains chains(ctx, kernels, kProgram, n, dims, MltSettings{sigma, large_step});
+    std::vector<float> start(n * dims, 0.5f);
+    chains.current().write(start);
+    chains.f_current().fill(1.0f);
+    chains.f_proposed().fill(1.0f);
+    chains.propose(13, 0);
+    chains.accept(13, 0);
+    std::vector<float> s = chains.current().read();
+    for (size_t d = 0; d < dims; ++d) {
+      double sum = 0.0;
+      for (size_t c = 0; c < n; ++c) {
+        float x = s[d * n + c];
+        ASSERT_TRUE(x >= 0.0f && x < 1.0f) << "dimension " << d << " of chain " << c << ": " << x;
+        sum += large_step > 0.0f ? x : std::fabs(x - 0.5);
+      }
+      double mean = sum / n;
+      double expect = large_step > 0.0f ? 0.5 : sigma * std::sqrt(2.0 / M_PI);
+      double sd = large_step > 0.0f ? std::sqrt(1.0 / 12.0 / n) : sigma * std::sqrt((1.0 - 2.0 / M_PI) / n);
+      EXPECT_LT(std::fabs(mean - expect) / sd, 4.0)
+          << (large_step > 0.0f ? "large" : "small") << " step, dimension " << d << ": mean " << mean;
+    }
+  }
 }
 
 }  // namespace

@@ -6,17 +6,6 @@ namespace gdr {
 
 static_assert(sizeof(GdrMltParams) == 32, "GdrMltParams layout changed");
 
-const std::vector<std::string> kMltParams = {"sigma", "large_step"};
-
-MltSettings mlt_settings(const IntegratorParams& params) {
-  MltSettings s;
-  s.sigma = params.non_negative("sigma", s.sigma);
-  if (!(s.sigma > 0.0f) || s.sigma > 1.0f) throw Error("integrator parameter sigma: must lie in (0, 1]");
-  s.large_step = params.non_negative("large_step", s.large_step);
-  if (s.large_step > 1.0f) throw Error("integrator parameter large_step: must lie in [0, 1]");
-  return s;
-}
-
 MarkovChains::MarkovChains(Context& context, const KernelFactory& kernels, const std::string& program,
                            size_t chains, size_t dims, const MltSettings& settings)
     : chains_(chains),
@@ -32,6 +21,9 @@ MarkovChains::MarkovChains(Context& context, const KernelFactory& kernels, const
       weights_(context, chains),
       counters_(context, GDR_COUNTER_NAMES(MLT_COUNTERS)) {
   if (chains == 0 || dims == 0) throw Error("Markov chains: need at least one chain of one dimension");
+  if (!(settings.sigma > 0.0f) || !(settings.large_step >= 0.0f && settings.large_step <= 1.0f)) {
+    throw Error("Markov chains: sigma must be positive and large_step in [0, 1]");
+  }
   counters_.reset();
 }
 

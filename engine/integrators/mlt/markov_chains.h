@@ -2,27 +2,21 @@
 // Metropolis integrators run over the bidirectional sampler. Each step proposes a mutation of
 // every chain on the device, lets the caller evaluate the target at the proposals (f_proposed),
 // and accepts or rejects them on the device, leaving the expected-value weights for the splats.
-//
-// Settings (IntegratorParams):
-//   sigma       small step: standard deviation of the Gaussian perturbation of each dimension (0.01)
-//   large_step  probability of a large step, a fresh uniform state (0.3)
 #pragma once
 #include <string>
 #include <vector>
 
-#include "render/integrator_params.h"
 #include "render/wavefront/device_counters.h"
 #include "render/wavefront/kernel_factory.h"
 #include "shared/mlt_types.h"
 
 namespace gdr {
 
+// The mutations' settings, with Kelemen et al.'s and pbrt's defaults.
 struct MltSettings {
-  float sigma = 0.01f;
-  float large_step = 0.3f;
+  float sigma = 0.01f;      // small step: standard deviation of the Gaussian perturbation of each dimension
+  float large_step = 0.3f;  // probability of a large step, a fresh uniform state
 };
-extern const std::vector<std::string> kMltParams;
-MltSettings mlt_settings(const IntegratorParams& params);
 
 class MarkovChains {
  public:
