@@ -85,8 +85,9 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
   cl_uint active = count;
   for (int cur = 0; active > 0; cur = 1 - cur) {
     counters_.reset();
-    propose_.args(params_, active, active_[cur], walks, states_, cl_uint(capacity_), results, rays_[0], counters_.buffer(), scene,
-                  in_.device_scene)
+    propose_
+        .args(params_, active, active_[cur], walks, states_, cl_uint(capacity_), results, rays_[0],
+              counters_.buffer(), scene, in_.device_scene)
         .run(active);
     cl_uint rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
     // One round per chain segment: at most MANIFOLD_MAX_CHAIN + 1.
@@ -94,13 +95,16 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
       Buffer<GdrRayHit>& in = rays_[round % 2];
       intersect(in_.embree, in, rays, false, "manifold");
       counters_.reset();
-      retrace_.args(params_, rays, in, rays_[1 - round % 2], walks, states_, cl_uint(capacity_), counters_.buffer(), scene, in_.device_scene)
+      retrace_
+          .args(params_, rays, in, rays_[1 - round % 2], walks, states_, cl_uint(capacity_), counters_.buffer(),
+                scene, in_.device_scene)
           .run(rays);
       rays = counters_.read()[MANIFOLD_COUNTER_TRACING];
     }
     counters_.reset();
-    accept_.args(params_, active, active_[cur], active_[1 - cur], walks, states_, cl_uint(capacity_), results, counters_.buffer(), scene,
-                 in_.device_scene)
+    accept_
+        .args(params_, active, active_[cur], active_[1 - cur], walks, states_, cl_uint(capacity_), results,
+              counters_.buffer(), scene, in_.device_scene)
         .run(active);
     active = counters_.read()[MANIFOLD_COUNTER_ACTIVE];
   }

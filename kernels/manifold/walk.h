@@ -196,7 +196,6 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
       // The first guess cannot be traced: a shorter first-order move, down to none at all.
       if (!(st.beta > 0.0f)) {
         walk_fail(res, counters, st.trace_status ? st.trace_status : MANIFOLD_COUNTER_FAIL_MISS);
-        store_state(s, m, &st);
         return;
       }
       st.beta = st.beta > 0.1f ? 0.25f * st.beta : 0.0f;
@@ -218,7 +217,6 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
   }
   if (st.accepted && st.error < params.tolerance && !st.chain_reaches) {
     walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_OCCLUDED);
-    store_state(s, m, &st);
     return;
   }
   if (st.accepted && st.error < params.tolerance) {
@@ -229,7 +227,6 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
     int r = manifold_end_derivative(&sd, &ch, &dx1);
     if (r) {
       walk_fail(res, counters, r);
-      store_state(s, m, &st);
       return;
     }
     float g = (float)manifold_geometry(&ch, dx1);
@@ -261,14 +258,13 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
           atomic_inc(&counters[MANIFOLD_COUNTER_SOLVED]);
         }
       }
-      store_state(s, m, &st);
       return;
     }
   } else if (st.iterations >= params.max_iterations || (st.accepted && st.beta < 1.0f / 1024.0f)) {
     walk_fail(res, counters, MANIFOLD_COUNTER_FAIL_NO_CONVERGENCE);
-    store_state(s, m, &st);
     return;
   }
+  // Only a walk that goes on keeps its state: an ended walk's is never read again.
   store_state(s, m, &st);
   next_active[atomic_inc(&counters[MANIFOLD_COUNTER_ACTIVE])] = w;
 }

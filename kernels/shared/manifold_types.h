@@ -54,7 +54,8 @@ typedef struct GdrManifoldResult {
 enum {
   MANIFOLD_STATE_PHASE,             // 0: the walk from start; 1: the reverse walk from origin
   MANIFOLD_STATE_ITERATIONS,        // of this phase
-  MANIFOLD_STATE_BETA,              // step size: starts at 1, halved on a rejected step, doubled on an accepted one (capped at 1)
+  MANIFOLD_STATE_BETA,              // step size: starts at 1, halved on a rejected step, doubled
+                                    // on an accepted one (capped at 1)
   MANIFOLD_STATE_ERROR,             // the accepted chain's distance from x_e
   MANIFOLD_STATE_ACCEPTED,          // a traced chain has been accepted in this phase
   MANIFOLD_STATE_CHAIN_REACHES,     // the accepted chain's last segment hit x_e's shape
