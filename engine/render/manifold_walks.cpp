@@ -79,6 +79,9 @@ void ManifoldWalks::solve(const Buffer<GdrManifoldWalk>& walks, cl_uint count, B
   if (count == 0) return;
   if (count > capacity_) throw Error("manifold walks: " + std::to_string(count) + " walks exceed the stage's capacity");
   ScopedTimer timer(in_.context.stats(), "render/manifold");
+  // Each round is several launches and counter fills: queued without a wait each, the host waits
+  // only at the counter reads (also where the caller's pass does not defer).
+  DeferredTiming deferred(in_.context);
   counters_.reset();
   begin_.args(count, states_, cl_uint(capacity_), results, active_[0], counters_.buffer()).run(count);
   counters_.read();

@@ -15,6 +15,8 @@ RenderResult render_radiance(Context& context, const RenderSettings& settings, F
   if (aux) aux->clear();
   RenderResult result;
   result.samples = run_progressive(settings, [&](int sample) {
+    // Launches queue without a wait each; the host waits where it reads (counters, Embree maps).
+    DeferredTiming deferred(context);
     for_each_chunk(pixels, capacity, [&](uint32_t first, uint32_t count) { trace_chunk(uint32_t(sample), first, count); });
   });
   result.seconds = timer.elapsed();

@@ -151,6 +151,8 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
   film_.clear();
   if (aux_) aux_->clear();
   int samples = run_progressive(settings, [&](int sample) {
+    // Launches queue without a wait each; the host waits where it reads (counters, Embree maps).
+    DeferredTiming deferred(in_.context);
     for_each_chunk(pixels, capacity_, [&](uint32_t first, uint32_t count) {
       trace_chunk(settings, uint32_t(sample), first, count);
     });
