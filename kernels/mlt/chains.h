@@ -9,11 +9,10 @@
 #include "mlt/mutation.h"
 
 __kernel void mlt_propose(GdrMltParams p, __global const float* current, __global float* proposed,
-                          __global uint* large, __global uint* counters) {
+                          __global uint* counters) {
   uint c = get_global_id(0);
   if (c >= p.chains) return;
-  int is_large = mlt_is_large_step(&p, c);
-  large[c] = (uint)is_large;
+  int is_large = mlt_control(&p, c).large;
   atomic_inc(&counters[is_large ? MLT_COUNTER_LARGE_STEPS : MLT_COUNTER_SMALL_STEPS]);
   for (uint d = 0; d < p.dims; d += 2) {
     size_t i = (size_t)d * p.chains + c, j = i + p.chains;
@@ -25,8 +24,8 @@ __kernel void mlt_propose(GdrMltParams p, __global const float* current, __globa
 }
 
 __kernel void mlt_accept(GdrMltParams p, __global float* current, __global const float* proposed,
-                         __global float* f_current, __global const float* f_proposed, __global const uint* large,
-                         __global float2* weights, __global uint* counters) {
+                         __global float* f_current, __global const float* f_proposed, __global float2* weights,
+                         __global uint* counters) {
   uint c = get_global_id(0);
   if (c >= p.chains) return;
   float fx = f_current[c], fy = f_proposed[c];
@@ -34,11 +33,12 @@ __kernel void mlt_accept(GdrMltParams p, __global float* current, __global const
   // (a chain seeded where nothing contributes) takes any proposal.
   float a = !(fy > 0.0f) || !isfinite(fy) ? 0.0f : fx > 0.0f ? fmin(1.0f, fy / fx) : 1.0f;
   weights[c] = (float2)(1.0f - a, a);
-  if (!(mlt_accept_uniform(&p, c) < a)) return;
+  MltControl k = mlt_control(&p, c);
+  if (!(k.accept < a)) return;
   for (uint d = 0; d < p.dims; ++d) {
     size_t i = (size_t)d * p.chains + c;
     current[i] = proposed[i];
   }
   f_current[c] = fy;
-  atomic_inc(&counters[large[c] ? MLT_COUNTER_LARGE_ACCEPTED : MLT_COUNTER_SMALL_ACCEPTED]);
+  atomic_inc(&counters[k.large ? MLT_COUNTER_LARGE_ACCEPTED : MLT_COUNTER_SMALL_ACCEPTED]);
 }

@@ -24,12 +24,17 @@ inline float2 mlt_normals(float4 u) {
   return (float2)(r * cos(phi), r * sin(phi));
 }
 
-// Whether chain c's step is a large one, and the uniform that decides its acceptance.
-inline int mlt_is_large_step(const GdrMltParams* p, uint c) {
-  return rng_block(p->seed, c, p->iteration, MLT_BLOCK_CONTROL).x < p->large_step;
-}
-inline float mlt_accept_uniform(const GdrMltParams* p, uint c) {
-  return rng_block(p->seed, c, p->iteration, MLT_BLOCK_CONTROL).y;
+// Chain c's step: whether it is a large one, and the uniform that decides its acceptance. Both
+// kernels of the step derive it from the same block, so nothing about it is stored between them.
+typedef struct MltControl {
+  int large;
+  float accept;
+} MltControl;
+
+inline MltControl mlt_control(const GdrMltParams* p, uint c) {
+  float4 u = rng_block(p->seed, c, p->iteration, MLT_BLOCK_CONTROL);
+  MltControl k = {u.x < p->large_step, u.y};
+  return k;
 }
 
 // Dimensions 2k and 2k + 1 of chain c's proposal from their current values x (one block of

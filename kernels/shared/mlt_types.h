@@ -10,8 +10,8 @@ typedef struct GdrMltParams {
   unsigned int dims;       // primary-sample dimensions per chain
   unsigned int seed;
   unsigned int iteration;  // the step every chain takes now (keys its random numbers)
-  float sigma;             // small step: standard deviation of the Gaussian perturbation (--sigma)
-  float large_step;        // probability that a step is a large one: a fresh uniform state (--large-step)
+  float sigma;             // small step: standard deviation of the Gaussian perturbation
+  float large_step;        // probability that a step is a large one: a fresh uniform state
   int pad0, pad1;
 } GdrMltParams;
 

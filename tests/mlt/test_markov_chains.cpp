@@ -100,6 +100,11 @@ TEST_P(MarkovChainsTest, KeepTheTargetDistribution) {
     f.args(cl_uint(kChains), chains.proposed(), chains.f_proposed()).run(kChains);
     chains.accept(11, uint32_t(it));
   }
+  // The last step's expected-value weights: (1 - a, a) with a in [0, 1].
+  for (const cl_float2& w : chains.weights().read()) {
+    ASSERT_TRUE(w.s[1] >= 0.0f && w.s[1] <= 1.0f && w.s[0] == 1.0f - w.s[1]) << k.name << ": weights " << w.s[0]
+                                                                              << ", " << w.s[1];
+  }
   std::vector<cl_uint> n = chains.counts();
   const uint64_t small = n[MLT_COUNTER_SMALL_STEPS], large = n[MLT_COUNTER_LARGE_STEPS];
   const uint64_t accepted = uint64_t(n[MLT_COUNTER_SMALL_ACCEPTED]) + n[MLT_COUNTER_LARGE_ACCEPTED];
@@ -159,8 +164,8 @@ TEST(MarkovChains, AcceptingEveryProposalIsDetected) {
   EXPECT_LT(r.p_value, 1e-6) << "chi2 = " << r.statistic << ": a chain that ignores the target passed";
 }
 
-// Three dimensions (the last without a partner), a constant target (every proposal accepted):
-// one large step leaves every dimension uniform (mean 1/2, |z| < 4), and one small step moves
+// Three dimensions (the last without a partner), a constant target (every proposal accepted,
+// with the whole weight): one large step leaves every dimension uniform (mean 1/2, |z| < 4), and one small step moves
 // every dimension by a Gaussian of sigma (mean |step| = sigma sqrt(2 / pi), |z| < 4).
 TEST(MarkovChains, EveryDimensionIsMutatedWithAnOddCount) {
   Context& ctx = test::default_context();
@@ -176,6 +181,9 @@ TEST(MarkovChains, EveryDimensionIsMutatedWithAnOddCount) {
     chains.f_proposed().fill(1.0f);
     chains.propose(13, 0);
     chains.accept(13, 0);
+    for (const cl_float2& w : chains.weights().read()) {
+      ASSERT_TRUE(w.s[0] == 0.0f && w.s[1] == 1.0f) << "a proposal as likely as its state is taken with weight 1";
+    }
     std::vector<float> s = chains.current().read();
     for (size_t d = 0; d < dims; ++d) {
       double sum = 0.0;

@@ -17,7 +17,6 @@ MarkovChains::MarkovChains(Context& context, const KernelFactory& kernels, const
       proposed_(context, chains * dims),
       f_current_(context, chains),
       f_proposed_(context, chains),
-      large_(context, chains),
       weights_(context, chains),
       counters_(context, GDR_COUNTER_NAMES(MLT_COUNTERS)) {
   if (chains == 0 || dims == 0) throw Error("Markov chains: need at least one chain of one dimension");
@@ -39,12 +38,11 @@ GdrMltParams MarkovChains::params(uint32_t seed, uint32_t iteration) const {
 }
 
 void MarkovChains::propose(uint32_t seed, uint32_t iteration) {
-  propose_.args(params(seed, iteration), current_, proposed_, large_, counters_.buffer()).run(chains_);
+  propose_.args(params(seed, iteration), current_, proposed_, counters_.buffer()).run(chains_);
 }
 
 void MarkovChains::accept(uint32_t seed, uint32_t iteration) {
-  accept_.args(params(seed, iteration), current_, proposed_, f_current_, f_proposed_, large_, weights_,
-               counters_.buffer())
+  accept_.args(params(seed, iteration), current_, proposed_, f_current_, f_proposed_, weights_, counters_.buffer())
       .run(chains_);
 }
 

@@ -51,7 +51,6 @@ class MarkovChains {
   MltSettings settings_;
   Kernel propose_, accept_;
   Buffer<float> current_, proposed_, f_current_, f_proposed_;
-  Buffer<cl_uint> large_;
   Buffer<cl_float2> weights_;
   DeviceCounters counters_;
 };
