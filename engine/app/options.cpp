@@ -151,6 +151,15 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   params.back().option = app.add_flag("--aux")
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
                              ->group("Integrator parameters");
+  param("--chains", "chains", "Markov chains run side by side (default 8192)")->check(CLI::Range(1, 1 << 30));
+  param("--bootstrap", "bootstrap", "bootstrap samples of the normalization and the chains' starts (default 131072)")
+      ->check(CLI::Range(1, 1 << 30));
+  param("--sigma", "sigma", "small step: standard deviation of each primary sample's perturbation, in (0, 1] (default 0.01)")
+      ->check(kFinitePositive);
+  param("--large-step", "large_step", "probability of a large step (a fresh uniform state), in [0, 1] (default 0.3)")
+      ->check(kFiniteNonNegative);
+  param("--mutations-per-pixel", "mutations_per_pixel", "the render's length in mutations a pixel (default: --spp)")
+      ->check(CLI::Range(1, 1 << 30));
   param("--shift", "shift",
         "shift mapping: hybrid (default) | replay | manifold (hybrid, with manifold walks across specular chains "
         "between rough vertices)")

@@ -4,6 +4,7 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gpt/gradient_path_tracer.h"
+#include "integrators/mlt/metropolis.h"
 #include "integrators/pt/path_tracer.h"
 #include "util/error.h"
 
@@ -48,6 +49,12 @@ std::vector<IntegratorEntry> make_registry() {
        false, kVcmParams, {"vcm"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<Bidirectional>(in, vcm_settings(p));
+       }},
+      {"mlt", "Metropolis light transport: primary-sample-space chains over bdpt's paths, one multiplexed strategy "
+              "a path",
+       false, kMltParams, {"pssmlt", "mlt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<Metropolis>(in, mlt_settings(p));
        }},
   };
 }

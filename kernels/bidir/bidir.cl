@@ -29,6 +29,7 @@
 #include "path/nee.h"
 #include "path/splat.h"
 #include "bidir/hash_grid.h"
+#include "bidir/strategies.h"
 #include "bidir/subpath_mis.h"
 #include "shared/bidir_types.h"
 #include "shared/ray_types.h"
@@ -113,13 +114,17 @@ __kernel void lt_direct(GdrPtParams params, uint count, __global const GdrRayHit
 // Light subpaths [first_pixel, first_pixel + pixel_count) of the pass leave their lights: the
 // emission sample, the first throughput and MIS sums, and the ray into queue 0 (compacted).
 __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrRayHit* rays, __global uint* queue,
-                         __global GdrBidirPathState* paths, __global uint* counters, SCENE_DATA_ARGS) {
+                         __global GdrBidirPathState* paths, __global uint* counters, PRIMARY_SAMPLE_ARGS,
+                         SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
   if (i >= params.pixel_count) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   uint index = params.first_pixel + i;
   paths[i].stored = 0;
-  PathSampler ps = path_sampler(params.seed, index, params.sample);
+  PathSampler ps = path_sampler_bound(params.seed, index, params.sample, PRIMARY_SAMPLE_NAMES);
+  // Strategies with s < 2 take no light subpath (s = 1 samples its light point from the camera).
+  int2 shown = bidir_path_strategy(&opts, &ps, params.max_depth);
+  if (shown.x >= 0 && shown.x < 2) return;
   float4 ue = sampler_block(&ps, RNG_BLOCK_EMISSION), ud = sampler_block(&ps, RNG_BLOCK_EMISSION_DIR);
   EmissionSample e;
   if (!light_emission_sample(&s, ue.x, ue.yz, ud.xy, &e)) return;
@@ -133,6 +138,7 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
   st.sample = params.sample;
   st.depth = 0;
   st.stored = 0;
+  bidir_set_strategy(&st, shown);
   mis_light_start(&s, &e, &opts, &st);
   paths[i] = st;
   uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
@@ -150,7 +156,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
                                 __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
                                 __global GdrRay* shadow_rays, __global GdrSplat* splats,
                                 __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
-                                __global uint* counters, SCENE_DATA_ARGS) {
+                                __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
   GdrRayHit rh = rays_in[q];
@@ -188,7 +194,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   GdrCamera cam = *camera;
   CameraProjection pr;
   if ((connects || opts.technique == BIDIR_LT) && segments_allowed(params.max_depth, k + 1) && !delta &&
-      bidir_strategy_shown(&opts, k + 1, 1) && camera_project(&cam, su.p, &pr)) {
+      bidir_strategy_shown(&st, k + 1, 1) && camera_project(&cam, su.p, &pr)) {
     float3 wc = -pr.dir, wc_local = frame_to_local(&frame, wc);
     float3 f = bsdf_eval_transport(&b, wo_local, wc_local, TRANSPORT_IMPORTANCE) *
                shading_normal_correction(wo, wc, su.ng, wo_local.z, wc_local.z);
@@ -208,11 +214,11 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   }
 
   // Continuation: the next vertex would make k + 2 segments once connected.
-  if (!segments_allowed(params.max_depth, k + 2)) {
+  if (!segments_allowed(params.max_depth, k + 2) || !bidir_light_subpath_grows(&st, k + 1)) {
     paths[slot] = st;
     return;
   }
-  PathSampler ps = path_sampler(params.seed, st.index, st.sample);
+  PathSampler ps = path_sampler_bound(params.seed, st.index, st.sample, PRIMARY_SAMPLE_NAMES);
   bidir_continue(&st, &opts, &ps, RNG_BLOCK_SUBPATH_BSDF(st.depth), params.rr_depth, TRANSPORT_IMPORTANCE, &b, &frame,
                  &su, wo_local, beta, slot, paths, counters, queue_out, rays_out);
 }
@@ -224,17 +230,19 @@ __kernel void bidir_camera_blocked(uint count, __global const GdrRay* shadow_ray
   if (!shadow_unoccluded(shadow_rays[k].tfar)) splat_drop(&splats[shadow_rays[k].id]);
 }
 
-// The camera subpaths of bdpt, pm and vcm for pixels [first_pixel, first_pixel + pixel_count): the ray, the state
-// and the MIS sums of the camera vertex.
+// The camera subpaths of bdpt, pm and vcm for pixels [first_pixel, first_pixel + pixel_count) (or
+// Metropolis chains: the film position is then a primary sample): the ray, the state and the MIS
+// sums of the camera vertex. Rays are counted in BIDIR_COUNTER_NEXT_RAYS.
 __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
-                            __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths) {
+                            __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths,
+                            __global uint* counters, PRIMARY_SAMPLE_ARGS) {
   uint i = get_global_id(0);
   if (i >= params.pixel_count) return;
   GdrCamera cam = *camera;
   uint pixel = params.first_pixel + i;
-  CameraRay r = pixel_camera_ray(&cam, params.seed, pixel, params.sample);
-  write_camera_ray(&rays[i], &r, i);
-  queue[i] = i;
+  PathSampler ps = path_sampler_bound(params.seed, pixel, params.sample, PRIMARY_SAMPLE_NAMES);
+  CameraRay r = sampler_camera_ray(&cam, &ps, pixel);
+  int2 shown = bidir_path_strategy(&opts, &ps, params.max_depth);
   GdrBidirPathState st;
   st.throughput[0] = st.throughput[1] = st.throughput[2] = 1.0f;
   st.rr_scale = 1.0f;
@@ -242,8 +250,16 @@ __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params
   st.sample = params.sample;
   st.depth = 0;
   st.stored = 0;
+  bidir_set_strategy(&st, shown);
   mis_camera_start(&cam, camera_cos_theta(&cam, r.d), opts.mis, &st);
   paths[i] = st;
+  // A multiplexed path whose strategy connects a light vertex to the camera (t = 1) traces no
+  // camera subpath; the other rays keep their pixels' slots.
+  if (opts.multiplex && shown.y == 1) return;
+  uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
+  if (!opts.multiplex) k = i;
+  write_camera_ray(&rays[k], &r, i);
+  queue[k] = i;
 }
 
 // The weight of emission a camera subpath found (s = 0): 1 seen directly (no other strategy
@@ -264,7 +280,8 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
                                 __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
                                 __global float4* shadow_values, __global GdrBidirPathState* paths,
                                 __global GdrBidirVertex* camera_vertices, __global uint* connectable,
-                                __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
+                                __global float4* film, __global uint* counters, PRIMARY_SAMPLE_ARGS,
+                                SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
@@ -279,7 +296,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
 
   if (rh.hit.geomID == GDR_INVALID_ID) {
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
-    if (s.env_light >= 0 && bidir_strategy_shown(&opts, 0, t + 1)) {
+    if (s.env_light >= 0 && bidir_strategy_shown(&st, 0, t + 1)) {
       float direct = escaped_light_pdf(&s, dir);
       float emission = direct * light_emission_over_direct(&s, s.env_light, (float3)(0.0f), -dir);
       float w = bdpt_emission_weight(&opts, &st, direct, emission);
@@ -293,7 +310,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   float3 wo = -dir;
   mis_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), opts.mis, &st);
 #if defined(GDR_LIGHT_AREA)
-  if (su.light >= 0 && bidir_strategy_shown(&opts, 0, t + 1)) {
+  if (su.light >= 0 && bidir_strategy_shown(&st, 0, t + 1)) {
     float3 le = surface_radiance(&s, &su, wo);
     if (max3(le) > 0.0f) {
       float direct = light_pmf(&s, su.light) * light_emission_pdf_pos(&s, su.light, su.area);
@@ -307,7 +324,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   Bsdf b = surface_bsdf(&s, &su);
   Frame frame = frame_from_normal(su.ns);
   float3 wo_local = frame_to_local(&frame, wo);
-  PathSampler ps = path_sampler(params.seed, st.index, st.sample);
+  PathSampler ps = path_sampler_bound(params.seed, st.index, st.sample, PRIMARY_SAMPLE_NAMES);
   int delta = bsdf_is_delta(&b);
 
   // Connection to a light point (s = 1).
@@ -315,7 +332,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   LightSample ls;
   float3 wi_local;
   int connects = bidir_connects(&opts), merges = bidir_merges(&opts);
-  if (connects && bidir_strategy_shown(&opts, 1, t + 1) && nee_applies(&s, &b) &&
+  if (connects && bidir_strategy_shown(&st, 1, t + 1) && nee_applies(&s, &b) &&
       nee_sample(&s, &ps, st.depth, &su, &frame, &light, &ls, &wi_local)) {
     float pdf_fwd = bsdf_pdf(&b, wo_local, wi_local), pdf_rev = bsdf_pdf(&b, wi_local, wo_local);
     float cos_z = fabs(dot(su.ng, ls.wi));
@@ -342,6 +359,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   }
   // pm's visible point is the first rough vertex: the subpath ends there.
   if (opts.technique == BIDIR_PM && !delta) return;
+  if (!bidir_camera_subpath_grows(&st, t + 1)) return;
 
   // BSDF sampling continues the subpath.
   bidir_continue(&st, &opts, &ps, RNG_BLOCK_BSDF(st.depth), params.rr_depth, TRANSPORT_RADIANCE, &b, &frame, &su,
@@ -359,10 +377,11 @@ __kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count,
   uint q = get_global_id(0);
   if (q >= count) return;
   uint slot = connectable[q];
-  if ((int)j >= light_paths[slot].stored) return;
+  GdrBidirPathState light = light_paths[slot];
+  if ((int)j >= light.stored) return;
   GdrBidirVertex z = camera_vertices[slot], y = store[j * stride + slot];
   if (!segments_allowed(params.max_depth, z.depth + y.depth + 1) ||
-      !bidir_strategy_shown(&opts, y.depth + 1, z.depth + 1)) return;
+      !bidir_strategy_shown(&light, y.depth + 1, z.depth + 1)) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   atomic_inc(&counters[BIDIR_COUNTER_CONNECTIONS]);
   Surface sz = surface_at(&s, z.prim, z.u, z.v), sy = surface_at(&s, y.prim, y.u, y.v);

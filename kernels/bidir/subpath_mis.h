@@ -107,10 +107,5 @@ inline float mis_emission_weight(float direct, float emission, const GdrBidirPat
 inline int bidir_connects(const GdrBidirOptions* o) { return o->technique == BIDIR_BDPT || o->technique == BIDIR_VCM; }
 inline int bidir_merges(const GdrBidirOptions* o) { return o->technique == BIDIR_PM || o->technique == BIDIR_VCM; }
 
-// The strategy (s light vertices, t camera vertices) is the one shown, or all are.
-inline int bidir_strategy_shown(const GdrBidirOptions* o, int s, int t) {
-  return o->strategy_s < 0 || (o->strategy_s == s && o->strategy_t == t);
-}
-
 // A weight of the strategy (s, t): w under MIS, 1 where a single strategy is shown.
 inline float bidir_weight(const GdrBidirOptions* o, float w) { return o->strategy_s < 0 ? w : 1.0f; }

@@ -7,7 +7,7 @@
 #include "shared/mlt_types.h"
 
 // Blocks of the chains' random numbers for one step (rng_block's last argument): the step kind
-// and the acceptance, then two dimensions per block of four uniforms.
+// and the acceptance, then four dimensions per block of four uniforms.
 #define MLT_BLOCK_CONTROL 0u
 #define MLT_BLOCK_DIMS 1u
 
@@ -17,8 +17,8 @@ inline float mlt_wrap(float x) {
   return x < 1.0f ? x : 0.0f;
 }
 
-// Two independent standard normals from four uniforms (Box-Muller on the first two).
-inline float2 mlt_normals(float4 u) {
+// Two independent standard normals from two uniforms (Box-Muller).
+inline float2 mlt_normals(float2 u) {
   float r = sqrt(-2.0f * log(fmax(1.0f - u.x, 1e-30f)));
   float phi = 2.0f * M_PI_F * u.y;
   return (float2)(r * cos(phi), r * sin(phi));
@@ -37,11 +37,18 @@ inline MltControl mlt_control(const GdrMltParams* p, uint c) {
   return k;
 }
 
-// Dimensions 2k and 2k + 1 of chain c's proposal from their current values x (one block of
-// random numbers and one Box-Muller transform serve both).
-inline float2 mlt_mutate_pair(const GdrMltParams* p, uint c, uint k, int large, float2 x) {
-  float4 u = rng_block(p->seed, c, p->iteration, MLT_BLOCK_DIMS + k);
-  if (large) return u.zw;
-  float2 n = mlt_normals(u);
-  return (float2)(mlt_wrap(x.x + p->sigma * n.x), mlt_wrap(x.y + p->sigma * n.y));
+// Dimensions 4k .. 4k + 3 of a large step of chain c at `iteration`: a function of those alone,
+// so a state a large step drew can be drawn again (a chain seeded from the bootstrap).
+inline float4 mlt_large_block(uint seed, uint c, uint iteration, uint k) {
+  return rng_block(seed, c, iteration, MLT_BLOCK_DIMS + k);
+}
+
+// Dimensions 4k .. 4k + 3 of chain c's proposal from their current values x (one block of random
+// numbers and two Box-Muller transforms serve all four).
+inline float4 mlt_mutate_block(const GdrMltParams* p, uint c, uint k, int large, float4 x) {
+  float4 u = mlt_large_block(p->seed, c, p->iteration, k);
+  if (large) return u;
+  float2 a = mlt_normals(u.xy), b = mlt_normals(u.zw);
+  float s = p->sigma;
+  return (float4)(mlt_wrap(x.x + s * a.x), mlt_wrap(x.y + s * a.y), mlt_wrap(x.z + s * b.x), mlt_wrap(x.w + s * b.y));
 }

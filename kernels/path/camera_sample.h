@@ -39,12 +39,37 @@ inline CameraRay camera_sample(const GdrCamera* cam, int x, int y, float2 jitter
   return r;
 }
 
+// The film positions a camera sample may take (camera_raster_inside): lower corner and size.
+inline float4 camera_sample_region(const GdrCamera* cam) {
+  float r = cam->sample_border ? cam->filter_radius : 0.0f;
+  return (float4)(-r, -r, (float)cam->width + 2.0f * r, (float)cam->height + 2.0f * r);
+}
+
+// A film position drawn uniformly over the region from the camera block: a Metropolis chain's
+// sample is not tied to a pixel, and its contribution is splatted where it lands.
+inline float2 camera_primary_raster(const GdrCamera* cam, const PathSampler* ps) {
+  float4 u = sampler_block(ps, RNG_BLOCK_CAMERA), region = camera_sample_region(cam);
+  return region.xy + u.xy * region.zw;
+}
+
+// The camera ray of the path of `ps`: with primary-sample-space numbers through its own film
+// position, else through `pixel` (row-major) at its filter offset from the camera's numbers.
+inline CameraRay sampler_camera_ray(const GdrCamera* cam, const PathSampler* ps, uint pixel) {
+  if (sampler_is_primary(ps)) {
+    float2 raster = camera_primary_raster(cam, ps);
+    CameraRay r;
+    camera_ray(cam, raster.x, raster.y, &r.o, &r.d, &r.tnear, &r.tfar);
+    return r;
+  }
+  int px = (int)(pixel % (uint)cam->width), py = (int)(pixel / (uint)cam->width);
+  return camera_sample(cam, px, py, camera_jitter(cam, ps, px, py));
+}
+
 // The camera ray of sample `sample` of `pixel` (row-major): its filter offset from the camera's
 // random numbers, then the ray through it.
 inline CameraRay pixel_camera_ray(const GdrCamera* cam, uint seed, uint pixel, uint sample) {
   PathSampler ps = path_sampler(seed, pixel, sample);
-  int px = (int)(pixel % (uint)cam->width), py = (int)(pixel / (uint)cam->width);
-  return camera_sample(cam, px, py, camera_jitter(cam, &ps, px, py));
+  return sampler_camera_ray(cam, &ps, pixel);
 }
 
 inline void write_camera_ray(__global GdrRayHit* r, const CameraRay* c, uint id) {

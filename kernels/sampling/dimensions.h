@@ -3,7 +3,10 @@
 // reads the same blocks, so gradient-domain shifts replay exactly the numbers the path tracer uses.
 // Light subpaths read blocks from RNG_LIGHT_SUBPATH on (two for the emission, then one per
 // bounce), so that the camera and light subpaths of one (pixel, sample) never share numbers.
+// Under multiplexed strategies (Metropolis) a path also reads RNG_BLOCK_STRATEGY: its length and
+// which strategy of that length it is sampled by.
 #pragma once
+#include "shared/sampler_types.h"
 
 #define RNG_BLOCK_CAMERA 0u
 #define RNG_BLOCK_LIGHT(depth) (1u + 2u * (uint)(depth))
@@ -13,3 +16,26 @@
 #define RNG_BLOCK_EMISSION (RNG_LIGHT_SUBPATH + 0u)      // x: light selection, yz: position
 #define RNG_BLOCK_EMISSION_DIR (RNG_LIGHT_SUBPATH + 1u)  // xy: direction
 #define RNG_BLOCK_SUBPATH_BSDF(depth) (RNG_LIGHT_SUBPATH + 2u + (uint)(depth))
+#define RNG_BLOCK_STRATEGY (RNG_LIGHT_SUBPATH - 1u)  // x: path length, y: strategy
+
+#define RNG_BLOCK_NOT_HELD 0xFFFFFFFFu
+
+// In primary sample space (Metropolis chains) the blocks lie densely, in the order the path
+// lengths first need them (shared/sampler_types.h): the strategy block, camera block 0, light
+// blocks 0 and 1 (length 1), then for length n = 2, 3, ...: camera blocks 2n - 3 and 2n - 2 and
+// (from n = 3) light block n - 1. A block past the layout is not held.
+inline uint primary_block_index(uint block, const GdrPrimaryLayout* layout) {
+  uint i;
+  if (block == RNG_BLOCK_STRATEGY) {
+    i = 0u;
+  } else if (block >= RNG_LIGHT_SUBPATH) {
+    uint b = block - RNG_LIGHT_SUBPATH;
+    i = b < 2u ? 2u + b : 3u * b + 2u;
+  } else if (block == 0u) {
+    i = 1u;
+  } else {
+    uint n = (block + 1u) / 2u + 1u, k = block - (2u * n - 3u);
+    i = (n == 2u ? 4u : 3u * n - 3u) + k;
+  }
+  return i < layout->blocks ? i : RNG_BLOCK_NOT_HELD;
+}

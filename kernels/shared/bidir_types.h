@@ -22,6 +22,8 @@ typedef struct GdrBidirOptions {
   float vm_normalization;  // 1 / (pi r^2 N): N light subpaths merged with
   float vm_factor;         // MIS weight factor of merging against connections (0 without merging)
   float vc_factor;         // of connections against merging (0 without connections)
+  int multiplex;           // 1: each path picks its length and one strategy from its numbers (bidir/strategies.h)
+  int pad0;
 } GdrBidirOptions;
 
 #define BIDIR_PATH_INFINITE 2  // a light subpath from a light at infinity (its first segment has no length)
@@ -39,6 +41,7 @@ typedef struct GdrBidirPathState {
   int depth;             // scattering vertices so far (0: leaving the light or the camera)
   int stored;            // light subpaths: vertices written to the light-vertex store
   int flags;             // BIDIR_PATH_*
+  int shown_s, shown_t;  // the one strategy this path adds (s light, t camera vertices), or -1: all
 } GdrBidirPathState;
 
 // A subpath vertex on a non-delta surface, kept for connections: the surface is found again from

@@ -4,6 +4,7 @@
 // structure of arrays: dimension d of chain c at d * chains + c.
 #pragma once
 #include "shared/counters.h"
+#include "shared/sampler_types.h"
 
 typedef struct GdrMltParams {
   unsigned int chains;     // chains in the batch
@@ -12,7 +13,11 @@ typedef struct GdrMltParams {
   unsigned int iteration;  // the step every chain takes now (keys its random numbers)
   float sigma;             // small step: standard deviation of the Gaussian perturbation
   float large_step;        // probability that a step is a large one: a fresh uniform state
-  int pad0, pad1;
+  unsigned int lengths;    // 0: the target reads every dimension; n: the state is a bidirectional
+                           // path's (shared/sampler_types.h), whose first dimension picks its
+                           // length of 1 .. n segments and which reads the first
+                           // 4 GDR_PRIMARY_BLOCKS(length) dimensions alone
+  int pad0;
 } GdrMltParams;
 
 // Proposals and acceptances by mutation kind (atomic_inc).

@@ -14,3 +14,20 @@ __kernel void mlt_test_target(uint chains, __global const float* states, __globa
   if (c >= chains) return;
   f[c] = mlt_test_f(states[c], states[chains + c]);
 }
+
+// A target over states of bidirectional paths of one or two segments (GdrMltParams.lengths = 2,
+// 24 dimensions): dimension 0 picks the length; both lengths read dimension 5, and only length 2
+// reads dimension 20 (past length 1's 16 dimensions), where it has a peak.
+inline float mlt_test_lengths_f(float u0, float u5, float u20, int read_u20) {
+  if (!read_u20) return 0.5f * (1.0f + u5);
+  float d = u20 - 0.7f;
+  return (1.0f + u5) * (1.0f + 3.0f * exp(-d * d / (2.0f * 0.05f * 0.05f)));
+}
+
+__kernel void mlt_test_lengths_target(uint chains, __global const float* states, __global float* f) {
+  uint c = get_global_id(0);
+  if (c >= chains) return;
+  float u0 = states[c];
+  int two = u0 >= 0.5f;
+  f[c] = mlt_test_lengths_f(u0, states[5 * chains + c], two ? states[20 * chains + c] : 0.0f, two);
+}

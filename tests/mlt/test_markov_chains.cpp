@@ -5,7 +5,10 @@
 // Pearson's chi-square applies: 2^16 chains, 16 x 16 cells, host seed 7, device seed 11,
 // false-positive rate 1e-3 per case. Also: states stay in [0, 1), the step counts add up, and
 // large steps come with the asked-for probability; with an odd dimension count, the last
-// dimension is mutated like the others.
+// dimension is mutated like the others. States of bidirectional paths, whose length decides which
+// dimensions the target reads and the mutations touch (GdrMltParams.lengths), keep their target
+// too (the same chi-square over the length-picking dimension and one that only the longer
+// length reads).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -164,7 +167,7 @@ TEST(MarkovChains, AcceptingEveryProposalIsDetected) {
   EXPECT_LT(r.p_value, 1e-6) << "chi2 = " << r.statistic << ": a chain that ignores the target passed";
 }
 
-// Three dimensions (the last without a partner), a constant target (every proposal accepted,
+// Three dimensions (a partial block of four), a constant target (every proposal accepted,
 // with the whole weight): one large step leaves every dimension uniform (mean 1/2, |z| < 4), and one small step moves
 // every dimension by a Gaussian of sigma (mean |step| = sigma sqrt(2 / pi), |z| < 4).
 TEST(MarkovChains, EveryDimensionIsMutatedWithAnOddCount) {
@@ -198,6 +201,66 @@ TEST(MarkovChains, EveryDimensionIsMutatedWithAnOddCount) {
       EXPECT_LT(std::fabs(mean - expect) / sd, 4.0)
           << (large_step > 0.0f ? "large" : "small") << " step, dimension " << d << ": mean " << mean;
     }
+  }
+}
+
+// States of paths of one or two segments (24 dimensions: shared/sampler_types.h gives length 1
+// its first 16): dimension 0 picks the length, the target reads dimension 20 only at length 2
+// (kernels/tests/mlt_test.cl), so a step touches dimensions 16 .. 23 only where the state or the
+// proposal is of length 2. Chains started from exact samples (every dimension the target does not
+// read uniform, as the stationary distribution has it) keep the target over (u0, u20) after 64
+// steps: chi-square over 16 x 16 cells, host seed 9, device seed 17, false-positive rate 1e-3
+// per case; small steps of sigma 0.1 cross between the lengths often.
+double lengths_density(double u0, double u20) {
+  if (u0 < 0.5) return 0.5 * 1.5;
+  double d = u20 - 0.7;
+  return 1.5 * (1.0 + 3.0 * std::exp(-d * d / (2.0 * 0.05 * 0.05)));
+}
+
+TEST(MarkovChains, PathLengthsReadingFewerDimensionsKeepTheTarget) {
+  Context& ctx = test::default_context();
+  Scene scene = test::furnace_scene(0.5f, 1.0f, 8);
+  KernelFactory kernels(ctx, scene);
+  const size_t dims = 24;
+  Kernel f = kernels.make(kProgram, "mlt_test_lengths_target");
+  for (const MltSettings& settings : {MltSettings{0.1f, 0.0f, 2}, MltSettings{0.01f, 0.3f, 2}}) {
+    const std::string name = settings.large_step > 0 ? "default mix" : "small steps of 0.1";
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    std::vector<float> start(kChains * dims);
+    for (size_t c = 0; c < kChains;) {
+      for (size_t d = 0; d < dims; ++d) start[d * kChains + c] = float(u01(rng));
+      double u0 = start[c], u5 = start[5 * kChains + c], u20 = start[20 * kChains + c];
+      double fx = (u0 < 0.5 ? 0.5 : (1.0 + 3.0 * std::exp(-(u20 - 0.7) * (u20 - 0.7) / 0.005))) * (1.0 + u5);
+      if (u01(rng) * 8.0 < fx) ++c;
+    }
+    MarkovChains chains(ctx, kernels, kProgram, kChains, dims, settings);
+    chains.current().write(start);
+    f.args(cl_uint(kChains), chains.current(), chains.f_current()).run(kChains);
+    for (int it = 0; it < 64; ++it) {
+      chains.propose(17, uint32_t(it));
+      f.args(cl_uint(kChains), chains.proposed(), chains.f_proposed()).run(kChains);
+      chains.accept(17, uint32_t(it));
+    }
+    std::vector<float> s = chains.current().read();
+    std::vector<double> observed(kCells * kCells, 0.0), expected(kCells * kCells, 0.0);
+    for (size_t c = 0; c < kChains; ++c) {
+      int i = std::min(int(s[c] * kCells), kCells - 1), j = std::min(int(s[20 * kChains + c] * kCells), kCells - 1);
+      observed[j * kCells + i] += 1.0;
+    }
+    const int sub = 32;
+    double total = 0.0;
+    for (int j = 0; j < kCells * sub; ++j) {
+      for (int i = 0; i < kCells * sub; ++i) {
+        double g = lengths_density((i + 0.5) / (kCells * sub), (j + 0.5) / (kCells * sub));
+        expected[(j / sub) * kCells + i / sub] += g;
+        total += g;
+      }
+    }
+    for (double& x : expected) x *= double(kChains) / total;
+    test::Chi2Result r = test::chi2_test(observed, expected, double(kChains));
+    EXPECT_TRUE(r.error.empty()) << r.error;
+    EXPECT_GT(r.p_value, 1e-3) << name << ": chi2 = " << r.statistic << ", dof = " << r.dof;
   }
 }
 

@@ -16,6 +16,9 @@ namespace gdr {
 struct MltSettings {
   float sigma = 0.01f;      // small step: standard deviation of the Gaussian perturbation of each dimension
   float large_step = 0.3f;  // probability of a large step, a fresh uniform state
+  // 0: the target reads every dimension; n: the states are bidirectional paths of 1 .. n
+  // segments, and a step touches the dimensions of their lengths alone (GdrMltParams.lengths).
+  unsigned lengths = 0;
 };
 
 class MarkovChains {
@@ -33,9 +36,20 @@ class MarkovChains {
   Buffer<float>& f_proposed() { return f_proposed_; }
   // After accept(): per chain, (weight of the current state before the step, weight of the proposal).
   const Buffer<cl_float2>& weights() const { return weights_; }
+  // The sum of f over the large steps' proposals so far, and their count: uniform samples of
+  // primary sample space, so sum / count estimates the integral of f.
+  struct Sample {
+    double sum = 0, count = 0;
+  };
+  Sample large_step_targets() const;
 
   void propose(uint32_t seed, uint32_t iteration);
   void accept(uint32_t seed, uint32_t iteration);
+  // A large step for every chain (a bootstrap's fresh states), without counting it as a step.
+  void propose_fresh(uint32_t seed, uint32_t iteration);
+  // Chain c's current state becomes the one propose_fresh(seed, picks[c].y) drew for chain
+  // picks[c].x; the caller sets f_current.
+  void start_at(uint32_t seed, const std::vector<cl_uint2>& picks);
 
   size_t chains() const { return chains_; }
   size_t dims() const { return dims_; }
@@ -44,15 +58,23 @@ class MarkovChains {
   std::vector<cl_uint> counts();
   void report(Stats* stats);
 
- private:
-  GdrMltParams params(uint32_t seed, uint32_t iteration) const;
+  // The parameters of step `iteration` as the kernels get them: a kernel of the caller's that
+  // includes mlt/chains.h derives each chain's step kind and acceptance from them (mlt_control).
+  GdrMltParams step_params(uint32_t seed, uint32_t iteration) const {
+    return params(seed, iteration, settings_.large_step);
+  }
 
+ private:
+  GdrMltParams params(uint32_t seed, uint32_t iteration, float large_step) const;
+
+  Context& ctx_;
   size_t chains_, dims_;
   MltSettings settings_;
-  Kernel propose_, accept_;
+  Kernel propose_, accept_, seed_;
   Buffer<float> current_, proposed_, f_current_, f_proposed_;
-  Buffer<cl_float2> weights_;
+  Buffer<cl_float2> weights_, large_targets_;
   DeviceCounters counters_;
+  DeviceCounters uncounted_;  // propose_fresh's: not steps of the chains
 };
 
 }  // namespace gdr

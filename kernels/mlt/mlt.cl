@@ -1,0 +1,71 @@
+// The Metropolis integrator (`mlt`): primary-sample-space Markov chains (mlt/chains.h) whose
+// states feed the bidirectional kernels' paths (kernels/bidir, through the sampler seam), one
+// multiplexed strategy a path (bidir/strategies.h). After the bidirectional kernels traced the
+// proposals, mlt_contribution turns what each path found into its contribution and the target f;
+// after the acceptance, mlt_splat splats the current and proposed contributions with their
+// expected-value weights (path/splat.h gathers them into the film, which the host scales by the
+// normalization).
+#include "bidir/strategies.h"
+#include "mlt/chains.h"
+#include "path/camera_sample.h"
+#include "path/splat.h"
+#include "shared/color.h"
+#include "shared/pt_types.h"
+
+// Chain c's contribution at the state `states` holds, once the bidirectional kernels traced it:
+// its strategy (t >= 2) added into values[c], at the film position its camera block gives, or
+// (t = 1) wrote its splat slot, where the light vertex projects. Scaled to the image's integral
+// over primary sample space (the film position's region for t >= 2, one light subpath a pixel
+// for t = 1) and by 1 / the strategy's selection probability, it is stored as its film position
+// and its value over f, f being its luminance (0: no contribution). Empties values[c] and the slot.
+__kernel void mlt_contribution(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
+                               GdrPrimaryLayout layout, __global const float* states, __global float4* values,
+                               __global GdrSplat* found, __global GdrSplat* contributions, __global float* f) {
+  uint c = get_global_id(0);
+  if (c >= layout.chains) return;
+  GdrCamera cam = *camera;
+  PathSampler ps = path_sampler_bound(params.seed, c, params.sample, states, layout);
+  int2 shown = bidir_path_strategy(&opts, &ps, params.max_depth);
+  float2 raster;
+  float3 value;
+  if (shown.y == 1) {
+    raster = (float2)(found[c].raster[0], found[c].raster[1]);
+    value = found[c].valid ? vload3(0, found[c].value) * (float)(cam.width * cam.height) : (float3)(0.0f);
+  } else {
+    float4 region = camera_sample_region(&cam);
+    raster = camera_primary_raster(&cam, &ps);
+    value = values[c].xyz * (region.z * region.w);
+  }
+  value *= bidir_selection_count(shown, params.max_depth);
+  float y = gdr_luminance(value.x, value.y, value.z);
+  int valid = y > 0.0f && isfinite(y) && is_finite3(value);
+  GdrSplat out;
+  out.raster[0] = raster.x;
+  out.raster[1] = raster.y;
+  vstore3(valid ? value / y : (float3)(0.0f), 0, out.value);
+  out.valid = valid;
+  out.pad0 = out.pad1 = 0;
+  contributions[c] = out;
+  f[c] = valid ? y : 0.0f;
+  values[c] = (float4)(0.0f);
+  found[c].valid = 0;
+}
+
+// The step's splats of chain c into slots 2c (the current state, weight 1 - a) and 2c + 1 (the
+// proposal, weight a) from `first`; then the chain's current contribution follows its state
+// (accepted where mlt_accept accepted: the same uniform).
+__kernel void mlt_splat(GdrMltParams p, __global const float2* weights, __global GdrSplat* current,
+                        __global const GdrSplat* proposed, uint first, __global GdrSplat* slots) {
+  uint c = get_global_id(0);
+  if (c >= p.chains) return;
+  float2 w = weights[c];
+  GdrSplat x = current[c], y = proposed[c];
+  __global GdrSplat* out = &slots[first + 2 * c];
+  out[0] = x;
+  out[0].valid = x.valid && w.x > 0.0f;
+  vstore3(vload3(0, x.value) * w.x, 0, out[0].value);
+  out[1] = y;
+  out[1].valid = y.valid && w.y > 0.0f;
+  vstore3(vload3(0, y.value) * w.y, 0, out[1].value);
+  if (mlt_control(&p, c).accept < w.y) current[c] = y;
+}

@@ -1,0 +1,19 @@
+// Where a path's primary-sample-space numbers lie when Metropolis chains drive the bidirectional
+// kernels (kernels/mlt), for the sampler seam (sampling/path_sampler.h). A chain's state holds
+// `blocks` blocks of four dimensions, ordered by the path length that first reads them
+// (sampling/dimensions.h: primary_block_index), so that a path of n segments reads the first
+// GDR_PRIMARY_BLOCKS(n) blocks alone and a mutation need only touch those.
+#pragma once
+
+typedef struct GdrPrimaryLayout {
+  unsigned int chains;  // 0: no chains, paths draw from the counter-based generator
+  unsigned int blocks;  // per chain; dimension d of chain c at d * chains + c
+  unsigned int pad0, pad1;
+} GdrPrimaryLayout;
+
+// The blocks a path of at most n segments reads: the strategy block; the camera subpath's block
+// 0 (film position) and, while another segment may follow its vertex at depth d (d <= n - 2),
+// blocks 1 + 2d (light sample) and 2 + 2d (BSDF sample); the light subpath's two emission blocks
+// and one a bounce while two more segments may follow (depth <= n - 3). That is 4 at n = 1 and
+// 3n from n = 2 on: each length adds two camera blocks and (from n = 3) one light block.
+#define GDR_PRIMARY_BLOCKS(n) ((n) < 2 ? 4 : 3 * (n))
