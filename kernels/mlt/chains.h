@@ -16,9 +16,13 @@ inline uint mlt_dims_read(const GdrMltParams* p, float u0) {
   return min(p->dims, 4u * (uint)GDR_PRIMARY_BLOCKS(n));
 }
 
-// A mutation touches the dimensions that the current state or the proposal reads: the same set
-// for the step back, so small and large steps stay symmetric, and a dimension neither reads keeps
-// its value (the proposed buffer's other dimensions are stale and never read).
+// A step where the target reads fewer dimensions than the state holds (GdrMltParams.lengths) works
+// on the dimensions the proposal reads alone: a state is its path length and the dimensions that
+// length reads, and the others are not part of it (their stale values are never read). A large
+// step draws the proposal's dimensions fresh; a small step moves those both lengths read and draws
+// the ones only the proposal's length reads fresh (uniform, density 1: the move back drops them),
+// so both steps are symmetric between the two states and the acceptance stays min(1, f(y) / f(x))
+// (Green's reversible jumps, with a Jacobian of 1).
 // Dimensions [d, d + 4) of chain c in a state buffer (those past dims read as 0, never written).
 inline float4 mlt_load_block(const GdrMltParams* p, __global const float* states, uint c, uint d) {
   float4 x = (float4)(0.0f);
@@ -44,12 +48,14 @@ __kernel void mlt_propose(GdrMltParams p, __global const float* current, __globa
   if (c >= p.chains) return;
   int is_large = mlt_control(&p, c).large;
   atomic_inc(&counters[is_large ? MLT_COUNTER_LARGE_STEPS : MLT_COUNTER_SMALL_STEPS]);
-  uint dims = p.dims;
-  for (uint d = 0; d < dims; d += 4) {
-    float4 x = mlt_load_block(&p, current, c, d);
-    float4 y = mlt_mutate_block(&p, c, d / 4, is_large, x);
-    mlt_store_block(&p, proposed, c, d, y);
-    if (d == 0) dims = max(mlt_dims_read(&p, x.x), mlt_dims_read(&p, y.x));
+  float4 x = mlt_load_block(&p, current, c, 0);
+  float4 y = mlt_mutate_block(&p, c, 0, is_large, x);
+  mlt_store_block(&p, proposed, c, 0, y);
+  uint held = mlt_dims_read(&p, x.x), dims = mlt_dims_read(&p, y.x);
+  for (uint d = 4; d < dims; d += 4) {
+    int fresh = is_large || d >= held;
+    float4 from = fresh ? (float4)(0.0f) : mlt_load_block(&p, current, c, d);
+    mlt_store_block(&p, proposed, c, d, mlt_mutate_block(&p, c, d / 4, fresh, from));
   }
 }
 
@@ -69,7 +75,7 @@ __kernel void mlt_accept(GdrMltParams p, __global float* current, __global const
   MltControl k = mlt_control(&p, c);
   if (k.large) large_targets[c] += (float2)(usable ? fy : 0.0f, 1.0f);
   if (!(k.accept < a)) return;
-  uint dims = max(mlt_dims_read(&p, current[c]), mlt_dims_read(&p, proposed[c]));
+  uint dims = mlt_dims_read(&p, proposed[c]);
   for (uint d = 0; d < dims; ++d) {
     size_t i = (size_t)d * p.chains + c;
     current[i] = proposed[i];

@@ -16,7 +16,7 @@ typedef struct GdrMltParams {
   unsigned int lengths;    // 0: the target reads every dimension; n: the state is a bidirectional
                            // path's (shared/sampler_types.h), whose first dimension picks its
                            // length of 1 .. n segments and which reads the first
-                           // 4 GDR_PRIMARY_BLOCKS(length) dimensions alone
+                           // 4 GDR_PRIMARY_BLOCKS(length) dimensions alone (mlt/chains.h)
   int pad0;
 } GdrMltParams;
 
