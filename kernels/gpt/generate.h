@@ -1,9 +1,12 @@
 // G-PT: camera rays of the base and its four offsets (the pixel shift), and the filing of
-// Embree's answers for the offsets.
+// Embree's answers for the offsets. A group of pixel p (row-major) takes its film offset from the
+// pixel's filter; a group of a Metropolis chain takes its film position from the chain's state,
+// and its offsets lie one pixel away from it.
 #pragma once
 #include "gradient/accumulators.h"
 #include "gradient/neighbours.h"
 #include "gradient/offsets.h"
+#include "camera/importance.h"
 #include "path/camera_sample.h"
 #include "path/path_state.h"
 #include "path/shadow.h"
@@ -11,14 +14,18 @@
 __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params, __global GdrRayHit* base_rays,
                            __global GdrRayHit* offset_rays, __global GptBaseState* bases,
                            __global GptOffsetState* offsets, __global GptChain* chains, __global float4* acc,
-                           __global uint* counters) {
+                           __global uint* counters, PRIMARY_SAMPLE_ARGS) {
   uint g = get_global_id(0);
   if (g >= params.path.pixel_count) return;
   GdrCamera cam = *camera;
   uint pixel = params.path.first_pixel + g;
-  int px = (int)(pixel % (uint)params.path.width), py = (int)(pixel / (uint)params.path.width);
-  PathSampler ps = path_sampler(params.path.seed, pixel, params.path.sample);
-  float2 jitter = camera_jitter(&cam, &ps, px, py);
+  PathSampler ps = path_sampler_bound(params.path.seed, pixel, params.path.sample, PRIMARY_SAMPLE_NAMES);
+  int primary = sampler_is_primary(&ps);
+  // Under chains: the film position's pixel and its offset from the pixel's centre.
+  float2 raster = primary ? camera_primary_raster(&cam, &ps) : (float2)(0.0f);
+  int px = primary ? (int)floor(raster.x) : (int)(pixel % (uint)params.path.width);
+  int py = primary ? (int)floor(raster.y) : (int)(pixel / (uint)params.path.width);
+  float2 jitter = primary ? raster - (float2)(px + 0.5f, py + 0.5f) : camera_jitter(&cam, &ps, px, py);
   CameraRay r = camera_sample(&cam, px, py, jitter);
   write_camera_ray(&base_rays[g], &r, g);
   GptBaseState b;
@@ -41,8 +48,11 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     int nx = px + OFFSET_PIXEL_DX(k), ny = py + OFFSET_PIXEL_DY(k);
     // The pixel shift keeps the film offset: its Jacobian is 1, and the two pixels' film
     // densities differ only near the image's edges, where the filter is cut (camera_shift_ratio).
+    // A chain's offset is a film position like its base's: it must lie where camera samples do.
     float q = 0.0f;
-    if (nx >= 0 && ny >= 0 && nx < params.path.width && ny < params.path.height) {
+    if (primary) {
+      q = camera_raster_inside(&cam, raster + (float2)(OFFSET_PIXEL_DX(k), OFFSET_PIXEL_DY(k))) ? 1.0f : 0.0f;
+    } else if (nx >= 0 && ny >= 0 && nx < params.path.width && ny < params.path.height) {
       q = camera_shift_ratio(&cam, px, py, nx, ny, jitter);
     }
     if (!(q > 0.0f) || !isfinite(q)) {

@@ -31,7 +31,7 @@ inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const Gpt
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
                         __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
                         __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
-                        __global uint* counters, SCENE_DATA_ARGS) {
+                        __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count || path_no_segments(params.path.max_depth)) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -137,7 +137,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   Bsdf b = surface_bsdf(&s, &su);
   Frame frame = frame_from_normal(su.ns);
   float3 wo_l = frame_to_local(&frame, wo);
-  PathSampler ps = path_state_sampler(st, params.path.seed);
+  PathSampler ps = path_state_sampler_bound(st, params.path.seed, PRIMARY_SAMPLE_NAMES);
 
   // Next-event estimation: the base samples a light point; offsets reconnect to the same point.
   // A light sample the base cannot use (shading and geometric normals disagree) is no sample at

@@ -16,7 +16,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
                         __global GdrRayHit* offset_rays, __global GdrRay* reconnect_rays,
                         __global const GptBaseState* bases, __global GptOffsetState* offsets,
                         __global GptChain* chains, __global GdrManifoldWalk* walks, __global uint* counters,
-                        SCENE_DATA_ARGS) {
+                        PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -39,7 +39,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
   x.delta = base.sample_delta;
   x.transmitted = base.sample_transmitted;
   x.diffuse = is_diffuse(&bx, thr);
-  PathSampler ps = path_state_sampler(&base.path, params.path.seed);
+  PathSampler ps = path_state_sampler_bound(&base.path, params.path.seed, PRIMARY_SAMPLE_NAMES);
   x.u = sampler_block(&ps, RNG_BLOCK_BSDF(base.path.depth - 1));
   // The base's next vertex.
   ShiftNext next;

@@ -1,12 +1,10 @@
-// The Metropolis integrator (`mlt`): primary-sample-space Markov chains (mlt/chains.h) whose
+// Metropolis light transport (`mlt`): primary-sample-space Markov chains (mlt/chains.h) whose
 // states feed the bidirectional kernels' paths (kernels/bidir, through the sampler seam), one
-// multiplexed strategy a path (bidir/strategies.h). After the bidirectional kernels traced the
-// proposals, mlt_contribution turns what each path found into its contribution and the target f;
-// after the acceptance, mlt_splat splats the current and proposed contributions with their
-// expected-value weights (path/splat.h gathers them into the film, which the host scales by the
-// normalization).
+// multiplexed strategy a path (bidir/strategies.h). After the bidirectional kernels traced a
+// batch of states, mlt_contribution turns what each path found into its contribution record and
+// the target f; the Metropolis loop's kernels (mlt/splats.h, path/splat.h) splat and gather them.
 #include "bidir/strategies.h"
-#include "mlt/chains.h"
+#include "mlt/splats.h"
 #include "path/camera_sample.h"
 #include "path/splat.h"
 #include "shared/color.h"
@@ -49,23 +47,4 @@ __kernel void mlt_contribution(__global const GdrCamera* camera, GdrPtParams par
   f[c] = valid ? y : 0.0f;
   values[c] = (float4)(0.0f);
   found[c].valid = 0;
-}
-
-// The step's splats of chain c into slots 2c (the current state, weight 1 - a) and 2c + 1 (the
-// proposal, weight a) from `first`; then the chain's current contribution follows its state
-// (accepted where mlt_accept accepted: the same uniform).
-__kernel void mlt_splat(GdrMltParams p, __global const float2* weights, __global GdrSplat* current,
-                        __global const GdrSplat* proposed, uint first, __global GdrSplat* slots) {
-  uint c = get_global_id(0);
-  if (c >= p.chains) return;
-  float2 w = weights[c];
-  GdrSplat x = current[c], y = proposed[c];
-  __global GdrSplat* out = &slots[first + 2 * c];
-  out[0] = x;
-  out[0].valid = x.valid && w.x > 0.0f;
-  vstore3(vload3(0, x.value) * w.x, 0, out[0].value);
-  out[1] = y;
-  out[1].valid = y.valid && w.y > 0.0f;
-  vstore3(vload3(0, y.value) * w.y, 0, out[1].value);
-  if (mlt_control(&p, c).accept < w.y) current[c] = y;
 }

@@ -20,6 +20,12 @@ inline PathSampler path_state_sampler(const GdrPathState* st, uint seed) {
   return path_sampler(seed, st->pixel, st->sample);
 }
 
+// The same in a kernel that declares PRIMARY_SAMPLE_ARGS (`pixel` is then the chain).
+inline PathSampler path_state_sampler_bound(const GdrPathState* st, uint seed, __global const float* numbers,
+                                            GdrPrimaryLayout layout) {
+  return path_sampler_bound(seed, st->pixel, st->sample, numbers, layout);
+}
+
 // Mitsuba's max_depth 0: not even the camera segment counts, so nothing is seen.
 inline int path_no_segments(int max_depth) { return max_depth == 0; }
 

@@ -3,7 +3,8 @@
 // connections, vertex connections, merges and the hash grid's build as rates from the render's
 // own counters), the splat film's gather alone (slots per second) for the slot counts of a pass,
 // and the device primitives the grid is built with and queues are compacted with (scan,
-// compaction, sort by key: items per second).
+// compaction, sort by key: items per second). The Metropolis integrator over the same kernels:
+// mutations per second with their acceptance rates by kind.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "accel/embree_scene.h"
 #include "device/devices.h"
 #include "integrators/bidir/bidirectional.h"
+#include "integrators/mlt/metropolis.h"
 #include "render/device_scene.h"
 #include "render/splat_film.h"
 #include "render/wavefront/primitives.h"
@@ -87,6 +89,34 @@ void BM_BidirPass(benchmark::State& state) {
   label(state, (std::string(bidir_technique_name(int(state.range(0)))) + ": light subpaths").c_str());
 }
 BENCHMARK(BM_BidirPass)->DenseRange(BIDIR_LT, BIDIR_VCM)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// mlt's steps: four mutations a pixel a render (after a render that compiles), the bootstrap of
+// 2^16 samples included; mutations per second and the acceptance of small and large steps.
+void BM_MltMutations(benchmark::State& state) {
+  BidirBench& b = bench();
+  Metropolis mlt(RenderInputs{b.ctx, b.scene, *b.embree, *b.device_scene},
+                 mlt_settings(IntegratorParams(std::map<std::string, std::string>{{"bootstrap", "65536"}})));
+  RenderSettings s;
+  s.spp = 4;
+  s.max_depth = b.scene.max_depth;
+  uint32_t seed = 1;
+  mlt.render(s);  // untimed: PoCL compiles each kernel at its first launch
+  const char* const counters[] = {"mlt/small_steps", "mlt/small_steps_accepted", "mlt/large_steps",
+                                  "mlt/large_steps_accepted"};
+  std::map<std::string, uint64_t> before;
+  for (const char* c : counters) before[c] = b.stats.count(c);
+  for (auto _ : state) {
+    s.seed = seed++;
+    mlt.render(s);
+  }
+  auto count = [&](const char* counter) { return double(b.stats.count(counter) - before[counter]); };
+  const double small = count("mlt/small_steps"), large = count("mlt/large_steps");
+  state.SetItemsProcessed(int64_t(small + large));
+  state.counters["small_acceptance"] = count("mlt/small_steps_accepted") / std::max(1.0, small);
+  state.counters["large_acceptance"] = count("mlt/large_steps_accepted") / std::max(1.0, large);
+  label(state, "mlt: mutations");
+}
+BENCHMARK(BM_MltMutations)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The device primitives on 2^20 items: exclusive scan, and the sort by key into 2^18 buckets
 // (the hash grid's shape: a few vertices a bucket).

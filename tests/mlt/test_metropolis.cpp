@@ -25,7 +25,7 @@ Scene project_scene(const std::string& name, int width) {
 
 // A short render's settings for a film of a few hundred pixels: 2048 chains (one step of all of
 // them is about 3.5 mutations a pixel at 24 x 24), a bootstrap of 2^16 samples.
-MetropolisSettings small_mlt() {
+MltIntegratorSettings small_mlt() {
   return mlt_settings(IntegratorParams({{"chains", "2048"}, {"bootstrap", "65536"}}));
 }
 
@@ -121,10 +121,10 @@ TEST(Mlt, ParametersAreChecked) {
            {{"bootstrap", "0"}}, {{"mutations_per_pixel", "0"}}, {{"mis", "cubic"}}}) {
     EXPECT_THROW(mlt_settings(IntegratorParams(bad)), Error) << bad.begin()->first << "=" << bad.begin()->second;
   }
-  MetropolisSettings s = mlt_settings(IntegratorParams({{"sigma", "0.05"}, {"large_step", "0"}, {"chains", "64"}}));
-  EXPECT_FLOAT_EQ(s.mutation.sigma, 0.05f);
-  EXPECT_EQ(s.mutation.large_step, 0.0f);
-  EXPECT_EQ(s.chains, 64u);
+  MltIntegratorSettings s = mlt_settings(IntegratorParams({{"sigma", "0.05"}, {"large_step", "0"}, {"chains", "64"}}));
+  EXPECT_FLOAT_EQ(s.loop.mutation.sigma, 0.05f);
+  EXPECT_EQ(s.loop.mutation.large_step, 0.0f);
+  EXPECT_EQ(s.loop.chains, 64u);
 }
 
 }  // namespace

@@ -15,24 +15,14 @@
 #pragma once
 #include <optional>
 
+#include "integrators/gpt/gradient_groups.h"
 #include "render/aux_layers.h"
 #include "render/gradient_film.h"
 #include "render/gradient_images.h"
 #include "render/integrator.h"
-#include "render/manifold_walks.h"
-#include "render/wavefront/device_counters.h"
-#include "render/wavefront/kernel_factory.h"
-#include "render/wavefront/ray_queues.h"
-#include "shared/gpt_types.h"
 
 namespace gdr {
 
-struct GptSettings {
-  int shift = GPT_SHIFT_HYBRID;  // GPT_SHIFT_*
-  float shift_threshold = GDR_GLOSSY_THRESHOLD;
-  bool aux = false;
-  ManifoldSettings manifold;
-};
 extern const std::vector<std::string> kGptParams;
 GptSettings gpt_settings(const IntegratorParams& params);
 
@@ -45,39 +35,12 @@ class GradientPathTracer : public Integrator {
   RenderResult render(const RenderSettings& settings) override;
 
  private:
-  void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
-  GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
-  // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
-  void intersect_offsets(cl_uint rays, cl_uint reconnects);
-  // Solves the walks the shift step queued and joins their offsets to the base.
-  void walk_offsets(const GdrGptParams& p, cl_uint walks);
-
   RenderInputs in_;
-  GptSettings gpt_;
   IntegratorParams params_;  // the reconstruction's
-  KernelFactory kernels_;
-  Kernel generate_, scatter_, shade_, shadow_, shift_, gather_;
-  size_t capacity_;  // groups in flight at once
-  RayQueues base_queues_;
-  Buffer<GdrRayHit> offset_rays_;
-  Buffer<GdrRay> reconnect_rays_;
-  Buffer<GdrRay> shadow_rays_;
-  Buffer<GptBaseState> bases_;
-  Buffer<GptOffsetState> offsets_;
-  Buffer<Vec4> acc_;   // GPT_ACC_COUNT per pixel of the whole image (gather reads neighbours)
-  Buffer<Vec4> pend_;  // GPT_PEND_COUNT per group
-  DeviceCounters counters_;
+  GradientGroups groups_;    // acc: a pixel's groups' sums at the pixel (the gather reads neighbours)
+  Kernel gather_;
   GradientFilm film_;
   std::optional<AuxLayers> aux_;
-  // The manifold shift, where the scene has specular chains (else --shift manifold is hybrid).
-  Buffer<GptChain> chains_;
-  Buffer<GdrManifoldWalk> walks_;
-  Buffer<GdrManifoldResult> walk_results_;
-  std::optional<ManifoldWalks> manifold_;
-  std::optional<Kernel> join_;
 };
-
-// Whether --shift manifold walks in this scene (it has specular chains).
-bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt);
 
 }  // namespace gdr

@@ -4,34 +4,24 @@
 // (kernels/sampling/path_sampler.h reads it through the sampler seam): its film position, its
 // length, the one strategy (s, t) it is sampled by, and the numbers of its camera and light
 // subpaths. The target f is the luminance of that strategy's MIS-weighted contribution over its
-// selection probability.
-//
-// A render: the bootstrap draws `bootstrap` independent states (large steps), whose mean f is the
-// normalization b (the image's integral over primary sample space) and from which the chains'
-// starts are picked in proportion to f; then every step proposes a mutation of every chain (small
-// or large), traces the proposals as one wavefront batch, accepts or rejects them, and splats
-// both the current and the proposed contributions with their expected-value weights, times b.
-// The image is the splats over the chains' steps. A pass is as many steps as make about one
-// mutation a pixel, so --spp (or mutations_per_pixel) counts mutations a pixel.
-//
-// Under MPI every rank runs chains of its own (their numbers keyed by its rank) with its own
-// bootstrap, over its share of the passes; the films are summed and divided by the job's steps.
+// selection probability, and its one contribution record is that contribution at its film
+// position (where the light vertex projects for t = 1). The chains, the bootstrap, the steps and
+// the normalization are the Metropolis loop's (metropolis_loop.h): a pass is about one mutation
+// a pixel, so --spp (or mutations_per_pixel) counts mutations a pixel.
 //
 // Parameters (IntegratorParams):
-//   chains               Markov chains run side by side, one work item each (default 8192)
-//   bootstrap            bootstrap samples (default 131072, at least one a chain)
+//   chains               Markov chains run side by side, one work item each (default 32768)
+//   bootstrap            bootstrap samples (default 262144, at least one a chain)
 //   sigma                small step: standard deviation of each dimension's perturbation (0.01)
 //   large_step           probability of a large step, a fresh uniform state (0.3)
 //   mutations_per_pixel  the render's length (default: --spp; --time may stop it earlier)
 //   mis                  power (default) | balance: the strategies' weights
 #pragma once
-#include <algorithm>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "integrators/bidir/subpaths.h"
-#include "integrators/mlt/markov_chains.h"
+#include "integrators/mlt/metropolis_loop.h"
 #include "render/film.h"
 #include "render/integrator.h"
 #include "render/integrator_params.h"
@@ -39,19 +29,16 @@
 
 namespace gdr {
 
-struct MetropolisSettings {
-  MltSettings mutation;
+struct MltIntegratorSettings {
+  MetropolisSettings loop;
   int mis = BIDIR_MIS_POWER;
-  size_t chains = 8192;
-  size_t bootstrap = size_t(1) << 17;
-  std::optional<int> mutations_per_pixel;
 };
 extern const std::vector<std::string> kMltParams;
-MetropolisSettings mlt_settings(const IntegratorParams& params);
+MltIntegratorSettings mlt_settings(const IntegratorParams& params);
 
 class Metropolis : public Integrator {
  public:
-  Metropolis(const RenderInputs& inputs, const MetropolisSettings& settings);
+  Metropolis(const RenderInputs& inputs, const MltIntegratorSettings& settings);
 
   RenderResult render(const RenderSettings& settings) override;
 
@@ -61,28 +48,20 @@ class Metropolis : public Integrator {
 
  private:
   static constexpr const char* kProgram = "mlt/mlt.cl";
-  // Traces the paths of `states` (iteration p.sample) and writes each chain's contribution and f.
-  void evaluate(const GdrPtParams& p, const Buffer<float>& states, Buffer<GdrSplat>& contributions,
-                Buffer<float>& f);
-  // The bootstrap: the sum of f over its samples and their count; each chain's start, then the
-  // chains' current contributions.
-  MarkovChains::Sample bootstrap(const GdrPtParams& base, uint32_t chain_seed);
-  size_t bootstrap_rounds() const { return std::max<size_t>(1, (settings_.bootstrap + settings_.chains - 1) / settings_.chains); }
+  // Traces the paths of `states` and writes each chain's contribution record and f.
+  void evaluate(const GdrPtParams& p, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f);
 
   RenderInputs in_;
-  MetropolisSettings settings_;
+  MltIntegratorSettings settings_;
   BidirSubpaths subpaths_;
-  Kernel contribution_, splat_;
+  Kernel contribution_;
   GdrBidirOptions options_{};
   GdrPrimaryLayout layout_{};
-  bool light_ = false;              // light subpaths can take part
-  std::optional<MarkovChains> chains_;
-  Buffer<Vec4> values_;             // camera subpaths' contributions, a chain each
-  SplatFilm found_;                 // t = 1 contributions, a slot a chain (never gathered)
-  Buffer<GdrSplat> current_, proposed_;  // contributions: film position, value over f
-  SplatFilm splats_;                // the steps' expected-value splats
-  size_t steps_per_gather_;
+  bool light_ = false;  // light subpaths can take part
+  Buffer<Vec4> values_;  // camera subpaths' contributions, a chain each
+  SplatFilm found_;      // t = 1 contributions, a slot a chain (never gathered)
   Film film_;
+  MetropolisLoop loop_;
   double normalization_ = 0;
 };
 

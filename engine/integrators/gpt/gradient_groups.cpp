@@ -1,0 +1,143 @@
+#include "integrators/gpt/gradient_groups.h"
+
+#include <algorithm>
+
+#include "util/log.h"
+
+namespace gdr {
+
+static_assert(sizeof(GptChain) == 28 + 40 * MANIFOLD_MAX_CHAIN, "GptChain layout changed");
+
+namespace {
+
+// Groups in flight per batch: a group holds five paths (about 1.5 KiB of queues and state), and
+// with the manifold shift up to four walks (about 2 KiB more).
+constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
+constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
+
+Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt) {
+  return gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
+}
+
+}  // namespace
+
+GptSettings gpt_shift_settings(const IntegratorParams& params, const std::string& default_shift) {
+  GptSettings s;
+  std::string shift = params.choice("shift", default_shift, {"hybrid", "replay", "manifold"});
+  s.shift = shift == "replay" ? GPT_SHIFT_REPLAY : shift == "manifold" ? GPT_SHIFT_MANIFOLD : GPT_SHIFT_HYBRID;
+  s.shift_threshold = params.non_negative("shift_threshold", s.shift_threshold);
+  s.manifold = manifold_settings(params);
+  return s;
+}
+
+bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt) {
+  return gpt.shift == GPT_SHIFT_MANIFOLD && scene.features.specular_chains();
+}
+
+size_t GradientGroups::capacity_for(const RenderInputs& in, const GptSettings& gpt, size_t pixels) {
+  return std::min(gpt_manifold_enabled(in.scene, gpt) ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight, pixels);
+}
+
+GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, size_t capacity, size_t indices)
+    : in_(in),
+      gpt_(gpt),
+      kernels_(in.context, in.scene, gpt_defines(in, gpt)),
+      generate_(kernels_.make(kProgram, "gpt_generate")),
+      scatter_(kernels_.make(kProgram, "gpt_scatter")),
+      shade_(kernels_.make(kProgram, "gpt_shade")),
+      shadow_(kernels_.make(kProgram, "gpt_shadow")),
+      shift_(kernels_.make(kProgram, "gpt_shift")),
+      capacity_(capacity),
+      base_queues_(in.context, capacity_, false),
+      offset_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
+      reconnect_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
+      shadow_rays_(in.context, capacity_ * (GPT_OFFSETS + 1), kRayQueueFlags),
+      bases_(in.context, capacity_),
+      offsets_(in.context, capacity_ * GPT_OFFSETS),
+      acc_(in.context, indices * GPT_ACC_COUNT),
+      pend_(in.context, capacity_ * GPT_PEND_COUNT),
+      counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)) {
+  const bool manifold = gpt_manifold_enabled(in.scene, gpt);
+  chains_ = Buffer<GptChain>(in.context, manifold ? capacity_ : 0);
+  walks_ = Buffer<GdrManifoldWalk>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
+  walk_results_ = Buffer<GdrManifoldResult>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
+  if (manifold) {
+    manifold_.emplace(in, kernels_, kProgram, capacity_ * GPT_OFFSETS, gpt.manifold);
+    join_.emplace(kernels_.make(kProgram, "gpt_manifold_join"));
+  }
+  if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
+}
+
+GdrGptParams GradientGroups::params(const RenderSettings& settings, uint32_t sample, uint32_t first,
+                                    uint32_t count) const {
+  GdrGptParams p{};
+  p.path = in_.device_scene.path_params(settings, sample, first, count);
+  p.shift = gpt_.shift;
+  p.shift_threshold = gpt_.shift_threshold;
+  return p;
+}
+
+void GradientGroups::intersect_offsets(cl_uint rays, cl_uint reconnects) {
+  intersect(in_.embree, offset_rays_, rays, false, "offset");
+  occlude(in_.embree, reconnect_rays_, reconnects, "reconnection");
+  scatter_.args(rays, offset_rays_, reconnects, reconnect_rays_, offsets_).run(rays + reconnects);
+}
+
+void GradientGroups::walk_offsets(const GdrGptParams& p, cl_uint walks) {
+  if (!manifold_ || walks == 0) return;
+  manifold_->solve(walks_, walks, walk_results_, p.path);
+  counters_.reset();
+  join_->args(p, walks, walks_, walk_results_, chains_, offsets_, counters_.buffer(), in_.device_scene).run(walks);
+  counters_.read();
+}
+
+void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux) {
+  Buffer<GdrRayHit>* base_rays = base_queues_.rays;
+  const cl_uint count = p.path.pixel_count;
+
+  counters_.reset();
+  generate_
+      .args(in_.device_scene.camera(), p, base_rays[0], offset_rays_, bases_, offsets_, chains_, acc_,
+            counters_.buffer(), primary)
+      .run(count);
+  counters_.read();
+  intersect(in_.embree, base_rays[0], count, true, "camera");
+  if (aux) aux->add(p.path, base_rays[0], count, in_.device_scene);
+  intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], 0);
+
+  cl_uint active = count;
+  for (int cur = 0; active > 0; cur = 1 - cur) {
+    counters_.reset();
+    shade_
+        .args(p, active, base_rays[cur], base_rays[1 - cur], shadow_rays_, bases_, offsets_, acc_, pend_,
+              counters_.buffer(), primary, in_.device_scene)
+        .run(active);
+    counters_.read();
+    cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], shadows = counters_[GPT_COUNTER_SHADOW_RAYS];
+    intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
+    if (shadows > 0) {
+      occlude(in_.embree, shadow_rays_, shadows, "shadow");
+      shadow_.args(shadows, shadow_rays_, pend_, bases_, acc_).run(shadows);
+    }
+    if (next > 0) {
+      counters_.reset();
+      shift_
+          .args(p, next, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_, chains_, walks_,
+                counters_.buffer(), primary, in_.device_scene)
+          .run(next);
+      counters_.read();
+      const cl_uint offset_rays = counters_[GPT_COUNTER_OFFSET_RAYS];
+      const cl_uint reconnects = counters_[GPT_COUNTER_RECONNECT_RAYS];
+      walk_offsets(p, counters_[GPT_COUNTER_MANIFOLD_WALKS]);
+      intersect_offsets(offset_rays, reconnects);
+    }
+    active = next;
+  }
+}
+
+void GradientGroups::report(Stats* stats) {
+  counters_.report(stats);
+  if (manifold_) manifold_->report(stats);
+}
+
+}  // namespace gdr

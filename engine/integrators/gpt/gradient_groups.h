@@ -1,0 +1,84 @@
+// G-PT's groups (kernels/gpt/gpt.cl): a base path and four offset paths through the neighbouring
+// pixels, traced in one wavefront for a batch of groups, with the shift mappings, the manifold
+// walks where the scene has specular chains, and each group's sums left in `acc` (GPT_ACC_COUNT
+// float4 at its path index). The gradient-domain path tracer traces a batch per chunk of pixels
+// (the index is the pixel, and its gather reads the neighbours' sums); the gradient-domain
+// Metropolis integrator one per step of its chains (the index is the chain, whose state feeds the
+// group's random numbers through the sampler seam).
+#pragma once
+#include <optional>
+
+#include "render/aux_layers.h"
+#include "render/integrator.h"
+#include "render/integrator_params.h"
+#include "render/manifold_walks.h"
+#include "render/primary_samples.h"
+#include "render/wavefront/device_counters.h"
+#include "render/wavefront/kernel_factory.h"
+#include "render/wavefront/ray_queues.h"
+#include "shared/gpt_types.h"
+
+namespace gdr {
+
+struct GptSettings {
+  int shift = GPT_SHIFT_HYBRID;  // GPT_SHIFT_*
+  float shift_threshold = GDR_GLOSSY_THRESHOLD;
+  bool aux = false;
+  ManifoldSettings manifold;
+};
+// The shift's parameters (shift, shift_threshold, manifold_*), with `shift` defaulting to
+// `default_shift`.
+GptSettings gpt_shift_settings(const IntegratorParams& params, const std::string& default_shift = "hybrid");
+
+// Whether --shift manifold walks in this scene (it has specular chains).
+bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt);
+
+class GradientGroups {
+ public:
+  static constexpr const char* kProgram = "gpt/gpt.cl";
+
+  // Up to `capacity` groups a batch; `indices` path indices (acc holds GPT_ACC_COUNT a path).
+  GradientGroups(const RenderInputs& inputs, const GptSettings& gpt, size_t capacity, size_t indices);
+
+  // Groups in flight for a film of `pixels` (fewer with the manifold shift: its walks' state).
+  static size_t capacity_for(const RenderInputs& inputs, const GptSettings& gpt, size_t pixels);
+
+  const KernelFactory& kernels() const { return kernels_; }
+  size_t capacity() const { return capacity_; }
+  Buffer<Vec4>& acc() { return acc_; }
+
+  // The groups of paths [p.path.first_pixel, + p.path.pixel_count), their sums into acc.
+  // `aux`: the base camera rays' first hits.
+  void trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux);
+  GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
+  void report(Stats* stats);
+
+ private:
+  // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
+  void intersect_offsets(cl_uint rays, cl_uint reconnects);
+  // Solves the walks the shift step queued and joins their offsets to the base.
+  void walk_offsets(const GdrGptParams& p, cl_uint walks);
+
+  RenderInputs in_;
+  GptSettings gpt_;
+  KernelFactory kernels_;
+  Kernel generate_, scatter_, shade_, shadow_, shift_;
+  size_t capacity_;
+  RayQueues base_queues_;
+  Buffer<GdrRayHit> offset_rays_;
+  Buffer<GdrRay> reconnect_rays_;
+  Buffer<GdrRay> shadow_rays_;
+  Buffer<GptBaseState> bases_;
+  Buffer<GptOffsetState> offsets_;
+  Buffer<Vec4> acc_;
+  Buffer<Vec4> pend_;  // GPT_PEND_COUNT per group
+  DeviceCounters counters_;
+  // The manifold shift, where the scene has specular chains (else --shift manifold is hybrid).
+  Buffer<GptChain> chains_;
+  Buffer<GdrManifoldWalk> walks_;
+  Buffer<GdrManifoldResult> walk_results_;
+  std::optional<ManifoldWalks> manifold_;
+  std::optional<Kernel> join_;
+};
+
+}  // namespace gdr

@@ -1,0 +1,170 @@
+#include "integrators/mlt/metropolis_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "cluster/ranks.h"
+#include "cluster/reduce.h"
+#include "render/progressive_loop.h"
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+// Splat slots a record gathers at once (each step writes two a chain): the sort's batch.
+constexpr size_t kSplatSlots = size_t(1) << 20;
+
+size_t whole_param(const IntegratorParams& params, const std::string& name, size_t fallback, size_t lowest) {
+  if (!params.has(name)) return fallback;
+  float v = params.non_negative(name, float(fallback));
+  if (v != std::floor(v) || v < float(lowest) || v > float(1u << 30)) {
+    throw Error("integrator parameter " + name + ": must be a whole number from " + std::to_string(lowest) +
+                " to 2^30");
+  }
+  return size_t(v);
+}
+
+// The chains' own random numbers: apart from the paths' (keyed by the render seed), and apart
+// on every rank.
+uint32_t chain_seed(uint32_t seed, int rank) {
+  uint64_t x = (uint64_t(seed) << 32 | uint32_t(rank)) * 0x9E3779B97F4A7C15ull;
+  return uint32_t(x >> 32) ^ 0x6d6c7421u;
+}
+
+}  // namespace
+
+const std::vector<std::string> kMetropolisParams = {"chains", "bootstrap", "sigma", "large_step",
+                                                    "mutations_per_pixel"};
+
+MetropolisSettings metropolis_settings(const IntegratorParams& params) {
+  MetropolisSettings s;
+  s.mutation.sigma = params.non_negative("sigma", s.mutation.sigma);
+  if (!(s.mutation.sigma > 0.0f) || s.mutation.sigma > 1.0f) throw Error("integrator parameter sigma: must lie in (0, 1]");
+  s.mutation.large_step = params.non_negative("large_step", s.mutation.large_step);
+  if (s.mutation.large_step > 1.0f) throw Error("integrator parameter large_step: must lie in [0, 1]");
+  s.chains = whole_param(params, "chains", s.chains, 1);
+  s.bootstrap = whole_param(params, "bootstrap", s.bootstrap, 1);
+  if (params.has("mutations_per_pixel")) s.mutations_per_pixel = int(whole_param(params, "mutations_per_pixel", 1, 1));
+  return s;
+}
+
+MetropolisLoop::MetropolisLoop(const RenderInputs& in, const KernelFactory& kernels, const std::string& program,
+                               const MetropolisSettings& settings, std::vector<Buffer<Vec4>*> layers)
+    : in_(in),
+      kernels_(kernels),
+      program_(program),
+      settings_(settings),
+      layers_(std::move(layers)),
+      splat_(kernels.make(program, "mlt_splat")),
+      current_(in.context, settings.chains * layers_.size()),
+      proposed_(in.context, settings.chains * layers_.size()),
+      steps_per_gather_(std::max<size_t>(1, kSplatSlots / (2 * settings.chains))) {
+  splats_.reserve(layers_.size());
+  for (size_t r = 0; r < layers_.size(); ++r) {
+    splats_.emplace_back(in.context, kernels, program, std::max(kSplatSlots, 2 * settings.chains));
+  }
+}
+
+size_t MetropolisLoop::bootstrap_rounds() const {
+  return std::max<size_t>(1, (settings_.bootstrap + settings_.chains - 1) / settings_.chains);
+}
+
+MarkovChains::Sample MetropolisLoop::bootstrap(uint32_t seed, const Evaluate& evaluate) {
+  ScopedTimer timer(in_.context.stats(), "render/mlt_bootstrap");
+  const size_t chains = settings_.chains;
+  std::vector<double> cumulative;  // of f over the bootstrap samples, round by round
+  cumulative.reserve(bootstrap_rounds() * chains);
+  double total = 0;
+  for (size_t r = 0; r < bootstrap_rounds(); ++r) {
+    chains_->propose_fresh(seed, uint32_t(r));
+    evaluate(uint32_t(r), chains_->proposed(), proposed_, chains_->f_proposed());
+    for (float f : chains_->f_proposed().read()) cumulative.push_back(total += f);
+  }
+  if (!(total > 0)) return {0, double(cumulative.size())};
+  // Each chain starts at a bootstrap sample drawn in proportion to f (resampling: the chains start
+  // close to their stationary distribution instead of burning in).
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, total);
+  std::vector<cl_uint2> picks(chains);
+  for (cl_uint2& pick : picks) {
+    size_t i = std::upper_bound(cumulative.begin(), cumulative.end(), u(rng)) - cumulative.begin();
+    i = std::min(i, cumulative.size() - 1);
+    pick = cl_uint2{{cl_uint(i % chains), cl_uint(i / chains)}};
+  }
+  chains_->start_at(seed, picks);
+  evaluate(uint32_t(bootstrap_rounds()), chains_->current(), current_, chains_->f_current());
+  return {total, double(cumulative.size())};
+}
+
+void MetropolisLoop::splat(uint32_t seed, uint32_t step, size_t pending) {
+  const cl_uint records = cl_uint(layers_.size());
+  for (cl_uint r = 0; r < records; ++r) {
+    splat_
+        .args(chains_->step_params(seed, step), r, records, chains_->weights(), current_, proposed_,
+              cl_uint(2 * settings_.chains * pending), splats_[r].slots())
+        .run(settings_.chains);
+  }
+}
+
+void MetropolisLoop::gather(size_t pending) {
+  const int height = in_.scene.camera.height;
+  for (size_t r = 0; r < layers_.size(); ++r) {
+    splats_[r].gather(in_.device_scene.camera(), height, cl_uint(2 * settings_.chains * pending), *layers_[r]);
+  }
+}
+
+MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_t dims, const MltSettings& mutation,
+                                           bool contributes, const Evaluate& evaluate) {
+  Stats* stats = in_.context.stats();
+  const size_t chains = settings_.chains;
+  const size_t pixels = size_t(in_.scene.camera.width) * in_.scene.camera.height;
+  chains_.emplace(in_.context, kernels_, program_, chains, dims, mutation);
+  const uint32_t seed = chain_seed(settings.seed, cluster::rank());
+  const MarkovChains::Sample boot = contributes ? bootstrap(seed, evaluate) : MarkovChains::Sample{};
+
+  // A pass: the steps that make about one mutation a pixel.
+  const size_t steps_per_pass = std::max<size_t>(1, (pixels + chains / 2) / chains);
+  const uint32_t first_step = uint32_t(bootstrap_rounds()) + 1;
+  RenderSettings loop = settings;
+  if (settings_.mutations_per_pixel) loop.spp = *settings_.mutations_per_pixel;
+  Result result;
+  size_t pending = 0;  // steps whose splats wait in the slots
+  result.passes = run_progressive(loop, [&](int sample) {
+    if (!(boot.sum > 0)) return;
+    for (size_t j = 0; j < steps_per_pass; ++j) {
+      const uint32_t step = first_step + uint32_t(size_t(sample) * steps_per_pass + j);
+      chains_->propose(seed, step);
+      evaluate(step, chains_->proposed(), proposed_, chains_->f_proposed());
+      chains_->accept(seed, step);
+      splat(seed, step, pending);
+      if (++pending == steps_per_gather_) {
+        gather(pending);
+        pending = 0;
+      }
+    }
+    if (pending > 0) gather(pending);
+    pending = 0;
+  });
+
+  // b from every uniform sample of all ranks: the bootstrap's and the large steps' proposals
+  // (Kelemen et al.), far more of them than the bootstrap alone in a long render.
+  const MarkovChains::Sample large = chains_->large_step_targets();
+  std::vector<float> uniform = {float(boot.sum + large.sum), float(boot.count + large.count)};
+  cluster::sum_to_root(uniform, stats);
+  result.normalization = uniform[1] > 0 ? double(uniform[0]) / uniform[1] : 0.0;
+  result.steps = double(result.passes) * double(steps_per_pass);
+  result.scale = result.steps > 0 ? result.normalization / (result.steps * double(chains)) : 0.0;
+  chains_->report(stats);
+  if (stats) {
+    stats->set("mlt/chains", chains);
+    stats->set("mlt/mutations_per_pixel", result.steps * double(chains) / double(pixels));
+    stats->set("mlt/normalization", result.normalization);
+    stats->set("mlt/normalization_samples", double(uniform[1]));
+    stats->add_count("mlt/bootstrap_samples", uint64_t(boot.count));
+    stats->set("render/spp", result.passes);
+  }
+  return result;
+}
+
+}  // namespace gdr

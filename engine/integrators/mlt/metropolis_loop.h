@@ -1,0 +1,80 @@
+// What the Metropolis integrators (mlt, gmlt) share: chains in primary sample space
+// (markov_chains.h) driven through a render. The integrator says how to evaluate a batch of
+// states (trace their paths and turn what they found into R contribution records a chain: film
+// position, value over the target f, and f); the loop does the rest:
+//   bootstrap  `bootstrap` fresh states, whose mean f estimates b (the target's integral over
+//              primary sample space); the chains start at bootstrap states drawn in proportion to
+//              f, and their current records are evaluated there;
+//   steps      per pass, the steps that make about one mutation a pixel: propose, evaluate,
+//              accept, then splat every record of the current state with weight 1 - a and of the
+//              proposal with weight a (kernels/mlt/splats.h) into record r's film layer;
+//   b          from every uniform sample of all ranks: the bootstrap's and the large steps'.
+// The film layers then hold sums whose image is b / (steps x chains) times them (scale()).
+// Under MPI every rank runs chains of its own (their numbers keyed by its rank).
+#pragma once
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "integrators/mlt/markov_chains.h"
+#include "render/integrator.h"
+#include "render/integrator_params.h"
+#include "render/splat_film.h"
+
+namespace gdr {
+
+// The settings every Metropolis integrator reads: the mutations (sigma, large_step), chains,
+// bootstrap and mutations_per_pixel.
+struct MetropolisSettings {
+  MltSettings mutation;
+  size_t chains = 32768;
+  size_t bootstrap = size_t(1) << 18;
+  std::optional<int> mutations_per_pixel;
+};
+extern const std::vector<std::string> kMetropolisParams;
+MetropolisSettings metropolis_settings(const IntegratorParams& params);
+
+class MetropolisLoop {
+ public:
+  // Traces the paths of `states` at `iteration` (the key of their numbers not in the states) and
+  // writes each chain's records (record r of chain c at r * chains + c) and f.
+  using Evaluate = std::function<void(uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records,
+                                      Buffer<float>& f)>;
+
+  // `program` holds the loop's kernels (mlt/chains.h, mlt/splats.h, path/splat.h); record r
+  // splats into layers[r] (a film layer of the camera's size).
+  MetropolisLoop(const RenderInputs& inputs, const KernelFactory& kernels, const std::string& program,
+                 const MetropolisSettings& settings, std::vector<Buffer<Vec4>*> layers);
+
+  struct Result {
+    int passes = 0;             // of all ranks
+    double normalization = 0;   // b
+    double steps = 0;           // chain steps of all ranks, over the chains
+    double scale = 0;           // what turns the layers' sums into the image: b / (steps x chains)
+  };
+  // The chains hold states of `dims` dimensions (`mutation.lengths` as MltSettings say); the
+  // bootstrap runs when `contributes` (else the layers stay black).
+  Result run(const RenderSettings& settings, size_t dims, const MltSettings& mutation, bool contributes,
+             const Evaluate& evaluate);
+
+  size_t chains() const { return settings_.chains; }
+
+ private:
+  MarkovChains::Sample bootstrap(uint32_t seed, const Evaluate& evaluate);
+  size_t bootstrap_rounds() const;
+  void splat(uint32_t seed, uint32_t step, size_t pending);
+  void gather(size_t pending);
+
+  RenderInputs in_;
+  const KernelFactory& kernels_;
+  std::string program_;
+  MetropolisSettings settings_;
+  std::vector<Buffer<Vec4>*> layers_;
+  Kernel splat_;
+  std::optional<MarkovChains> chains_;
+  Buffer<GdrSplat> current_, proposed_;  // R records a chain
+  std::vector<SplatFilm> splats_;        // record r's splats
+  size_t steps_per_gather_;
+};
+
+}  // namespace gdr
