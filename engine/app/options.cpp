@@ -160,8 +160,11 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(kFiniteNonNegative);
   param("--mutations-per-pixel", "mutations_per_pixel", "the render's length in mutations a pixel (default: --spp)")
       ->check(CLI::Range(1, 1 << 30));
+  param("--target-alpha", "target_alpha",
+        "gmlt: weight of the primal against the gradients in the chains' target (default 0.2)")
+      ->check(kFinitePositive);
   param("--shift", "shift",
-        "shift mapping: hybrid (default) | replay | manifold (hybrid, with manifold walks across specular chains "
+        "shift mapping: hybrid (default; gmlt: manifold) | replay | manifold (hybrid, with manifold walks across specular chains "
         "between rough vertices)")
       ->check(CLI::IsMember({"hybrid", "replay", "manifold"}));
   param("--manifold-iterations", "manifold_iterations", "Newton iterations per manifold walk (default 20)")

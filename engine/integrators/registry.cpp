@@ -4,6 +4,7 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gpt/gradient_path_tracer.h"
+#include "integrators/mlt/gradient_metropolis.h"
 #include "integrators/mlt/metropolis.h"
 #include "integrators/pt/path_tracer.h"
 #include "util/error.h"
@@ -55,6 +56,12 @@ std::vector<IntegratorEntry> make_registry() {
        false, kMltParams, {"pssmlt", "mlt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<Metropolis>(in, mlt_settings(p));
+       }},
+      {"gmlt", "gradient-domain Metropolis light transport: chains over G-PT's base and offset paths, sampling where "
+               "the gradients are, L1 or L2 reconstruction",
+       true, join(kGmltParams, kReconParams), {"gmlt", "gdmlt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<GradientMetropolis>(in, gmlt_settings(p), p);
        }},
   };
 }

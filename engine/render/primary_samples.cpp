@@ -4,10 +4,11 @@ static_assert(sizeof(GdrPrimaryLayout) == 16, "GdrPrimaryLayout layout changed")
 
 namespace gdr {
 
-GdrPrimaryLayout PrimarySamples::layout_for(size_t chains, int segments) {
+GdrPrimaryLayout PrimarySamples::layout_for(size_t chains, int segments, bool camera_only) {
   GdrPrimaryLayout l{};
   l.chains = cl_uint(chains);
-  l.blocks = cl_uint(GDR_PRIMARY_BLOCKS(segments));
+  l.camera_only = camera_only ? 1u : 0u;
+  l.blocks = cl_uint(camera_only ? GDR_PRIMARY_CAMERA_BLOCKS(segments) : GDR_PRIMARY_BLOCKS(segments));
   return l;
 }
 

@@ -12,8 +12,9 @@ class PrimarySamples {
   PrimarySamples() = default;  // none
   PrimarySamples(const Buffer<float>& states, const GdrPrimaryLayout& layout) : states_(&states), layout_(layout) {}
 
-  // The layout of chains holding every block a path of at most `segments` segments reads.
-  static GdrPrimaryLayout layout_for(size_t chains, int segments);
+  // The layout of chains holding every block a bidirectional path of at most `segments` segments
+  // reads (its length and strategy among them), or with camera_only a camera path's.
+  static GdrPrimaryLayout layout_for(size_t chains, int segments, bool camera_only = false);
 
   const GdrPrimaryLayout& layout() const { return layout_; }
   cl_uint bind_to(Kernel& kernel, cl_uint first) const;

@@ -23,10 +23,13 @@
 // In primary sample space (Metropolis chains) the blocks lie densely, in the order the path
 // lengths first need them (shared/sampler_types.h): the strategy block, camera block 0, light
 // blocks 0 and 1 (length 1), then for length n = 2, 3, ...: camera blocks 2n - 3 and 2n - 2 and
-// (from n = 3) light block n - 1. A block past the layout is not held.
+// (from n = 3) light block n - 1. Camera paths alone hold the camera's blocks in their order. A
+// block past the layout is not held.
 inline uint primary_block_index(uint block, const GdrPrimaryLayout* layout) {
   uint i;
-  if (block == RNG_BLOCK_STRATEGY) {
+  if (layout->camera_only) {
+    i = block < RNG_LIGHT_SUBPATH - 1u ? block : RNG_BLOCK_NOT_HELD;
+  } else if (block == RNG_BLOCK_STRATEGY) {
     i = 0u;
   } else if (block >= RNG_LIGHT_SUBPATH) {
     uint b = block - RNG_LIGHT_SUBPATH;

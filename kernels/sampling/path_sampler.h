@@ -28,7 +28,7 @@ inline PathSampler path_sampler(uint seed, uint pixel, uint sample) {
   ps.pixel = pixel;
   ps.sample = sample;
   ps.primary = 0;
-  ps.layout.chains = ps.layout.blocks = ps.layout.pad0 = ps.layout.pad1 = 0u;
+  ps.layout.chains = ps.layout.blocks = ps.layout.camera_only = ps.layout.pad0 = 0u;
   return ps;
 }
 

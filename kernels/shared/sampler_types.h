@@ -6,9 +6,10 @@
 #pragma once
 
 typedef struct GdrPrimaryLayout {
-  unsigned int chains;  // 0: no chains, paths draw from the counter-based generator
-  unsigned int blocks;  // per chain; dimension d of chain c at d * chains + c
-  unsigned int pad0, pad1;
+  unsigned int chains;       // 0: no chains, paths draw from the counter-based generator
+  unsigned int blocks;       // per chain; dimension d of chain c at d * chains + c
+  unsigned int camera_only;  // 1: camera paths alone (G-PT's groups): block b of the camera at b
+  unsigned int pad0;
 } GdrPrimaryLayout;
 
 // The blocks a path of at most n segments reads: the strategy block; the camera subpath's block
@@ -17,3 +18,5 @@ typedef struct GdrPrimaryLayout {
 // and one a bounce while two more segments may follow (depth <= n - 3). That is 4 at n = 1 and
 // 3n from n = 2 on: each length adds two camera blocks and (from n = 3) one light block.
 #define GDR_PRIMARY_BLOCKS(n) ((n) < 2 ? 4 : 3 * (n))
+// The blocks a camera path of at most n segments reads alone (camera_only).
+#define GDR_PRIMARY_CAMERA_BLOCKS(n) (2 * (n) - 1)

@@ -8,7 +8,7 @@
 namespace gdr {
 
 const std::vector<std::string> kMltParams = [] {
-  std::vector<std::string> p = kMetropolisParams;
+  std::vector<std::string> p = metropolis_params();
   p.push_back("mis");
   return p;
 }();

@@ -34,8 +34,9 @@ uint32_t chain_seed(uint32_t seed, int rank) {
 
 }  // namespace
 
-const std::vector<std::string> kMetropolisParams = {"chains", "bootstrap", "sigma", "large_step",
-                                                    "mutations_per_pixel"};
+std::vector<std::string> metropolis_params() {
+  return {"chains", "bootstrap", "sigma", "large_step", "mutations_per_pixel"};
+}
 
 MetropolisSettings metropolis_settings(const IntegratorParams& params) {
   MetropolisSettings s;

@@ -31,7 +31,8 @@ struct MetropolisSettings {
   size_t bootstrap = size_t(1) << 18;
   std::optional<int> mutations_per_pixel;
 };
-extern const std::vector<std::string> kMetropolisParams;
+// Their names (a function: other integrators' parameter lists are built from it at start-up).
+std::vector<std::string> metropolis_params();
 MetropolisSettings metropolis_settings(const IntegratorParams& params);
 
 class MetropolisLoop {
