@@ -54,12 +54,12 @@ GmltSettings gmlt_settings(const IntegratorParams& params) {
 GradientMetropolis::GradientMetropolis(const RenderInputs& in, const GmltSettings& settings,
                                        const IntegratorParams& params)
     : in_(in),
-      settings_(settings),
+      settings_{for_film(settings.loop, in.scene), settings.gpt, settings.target_alpha},
       recon_params_(recon_params(params)),
-      groups_(in, settings.gpt, settings.loop.chains, settings.loop.chains),
+      groups_(in, settings_.gpt, settings_.loop.chains, settings_.loop.chains),
       contribution_(groups_.kernels().make(kProgram, "gmlt_contribution")),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"primal", "dx", "dy", "direct"}),
-      loop_(in, groups_.kernels(), kProgram, settings.loop, [this] {
+      loop_(in, groups_.kernels(), kProgram, settings_.loop, [this] {
         std::vector<Buffer<Vec4>*> layers;
         for (const std::string& name : record_layers()) layers.push_back(&film_[name]);
         return layers;

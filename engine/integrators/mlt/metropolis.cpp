@@ -19,13 +19,13 @@ MltIntegratorSettings mlt_settings(const IntegratorParams& params) {
 
 Metropolis::Metropolis(const RenderInputs& in, const MltIntegratorSettings& settings)
     : in_(in),
-      settings_(settings),
-      subpaths_(in, BIDIR_BDPT, settings.loop.chains),
+      settings_{for_film(settings.loop, in.scene), settings.mis},
+      subpaths_(in, BIDIR_BDPT, settings_.loop.chains),
       contribution_(subpaths_.kernels().make(kProgram, "mlt_contribution")),
-      values_(in.context, settings.loop.chains),
-      found_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, settings.loop.chains),
+      values_(in.context, settings_.loop.chains),
+      found_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, settings_.loop.chains),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
-      loop_(in, subpaths_.kernels(), kProgram, settings.loop, {&film_["radiance"]}) {
+      loop_(in, subpaths_.kernels(), kProgram, settings_.loop, {&film_["radiance"]}) {
   values_.fill(Vec4{});
   options_ = GdrBidirOptions{BIDIR_BDPT, settings.mis, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 1, 0};
 }

@@ -10,7 +10,8 @@
 // a pixel, so --spp (or mutations_per_pixel) counts mutations a pixel.
 //
 // Parameters (IntegratorParams):
-//   chains               Markov chains run side by side, one work item each (default 32768)
+//   chains               Markov chains run side by side, one work item each (default: one a
+//                        pixel, at most 32768)
 //   bootstrap            bootstrap samples (default 262144, at least one a chain)
 //   sigma                small step: standard deviation of each dimension's perturbation (0.01)
 //   large_step           probability of a large step, a fresh uniform state (0.3)

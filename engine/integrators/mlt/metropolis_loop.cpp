@@ -50,6 +50,11 @@ MetropolisSettings metropolis_settings(const IntegratorParams& params) {
   return s;
 }
 
+MetropolisSettings for_film(MetropolisSettings s, const Scene& scene) {
+  if (s.chains == 0) s.chains = std::min(kDefaultChains, size_t(scene.camera.width) * scene.camera.height);
+  return s;
+}
+
 MetropolisLoop::MetropolisLoop(const RenderInputs& in, const KernelFactory& kernels, const std::string& program,
                                const MetropolisSettings& settings, std::vector<Buffer<Vec4>*> layers)
     : in_(in),

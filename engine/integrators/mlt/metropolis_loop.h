@@ -27,12 +27,16 @@ namespace gdr {
 // bootstrap and mutations_per_pixel.
 struct MetropolisSettings {
   MltSettings mutation;
-  size_t chains = 32768;
+  size_t chains = 0;  // 0: one a pixel, at most kDefaultChains (resolve with for_film)
   size_t bootstrap = size_t(1) << 18;
   std::optional<int> mutations_per_pixel;
 };
 // Their names (a function: other integrators' parameter lists are built from it at start-up).
 std::vector<std::string> metropolis_params();
+// The default chain count's cap: enough work items to fill a GPU, about 1 GiB of path state.
+constexpr size_t kDefaultChains = size_t(1) << 15;
+// `s` with its chain count resolved for the scene's film.
+MetropolisSettings for_film(MetropolisSettings s, const Scene& scene);
 MetropolisSettings metropolis_settings(const IntegratorParams& params);
 
 class MetropolisLoop {
