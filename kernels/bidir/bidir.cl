@@ -254,7 +254,7 @@ __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params
   mis_camera_start(&cam, camera_cos_theta(&cam, r.d), opts.mis, &st);
   paths[i] = st;
   // A multiplexed path whose strategy connects a light vertex to the camera (t = 1) traces no
-  // camera subpath; the other rays keep their pixels' slots.
+  // camera subpath, and the others' rays are compacted; a pixel's ray keeps its pixel's slot.
   if (opts.multiplex && shown.y == 1) return;
   uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
   if (!opts.multiplex) k = i;

@@ -57,6 +57,30 @@ void label(benchmark::State& state, const char* what) {
   state.SetLabel(std::string(what) + ", cornell-box 256x256 on " + test::default_context().device().name);
 }
 
+// Renders `integrator` once per iteration (a new seed each) after `s`'s untimed first render (PoCL
+// compiles each kernel at its first launch); returns how much each counter grew over the timed
+// renders, and the seconds of `timer` over render/trace's.
+struct TimedRenders {
+  std::map<std::string, double> grew;
+  double timer_share = 0;
+};
+TimedRenders timed_renders(benchmark::State& state, Integrator& integrator, RenderSettings s,
+                           const std::vector<const char*>& counters, const char* timer = "") {
+  BidirBench& b = bench();
+  integrator.render(s);
+  std::map<std::string, uint64_t> before;
+  for (const char* c : counters) before[c] = b.stats.count(c);
+  const double timer0 = b.stats.seconds(timer), trace0 = b.stats.seconds("render/trace");
+  for (auto _ : state) {
+    s.seed += 1;
+    integrator.render(s);
+  }
+  TimedRenders out;
+  for (const char* c : counters) out.grew[c] = double(b.stats.count(c) - before[c]);
+  out.timer_share = (b.stats.seconds(timer) - timer0) / std::max(1e-9, b.stats.seconds("render/trace") - trace0);
+  return out;
+}
+
 // One pass (the scene's max_depth) of technique range(0) (BIDIR_*): lt's camera rays and light
 // subpaths; bdpt's, pm's and vcm's light subpaths, grid and camera subpaths.
 void BM_BidirPass(benchmark::State& state) {
@@ -65,33 +89,22 @@ void BM_BidirPass(benchmark::State& state) {
   RenderSettings s;
   s.spp = 1;
   s.max_depth = b.scene.max_depth;
-  uint32_t seed = 1;
-  tracer.render(s);  // untimed: PoCL compiles each kernel at its first launch
-  const char* const counters[] = {"bidir/camera_connections", "bidir/connections", "bidir/merges",
-                                  "bidir/light_vertices"};
-  std::map<std::string, uint64_t> before;
-  for (const char* c : counters) before[c] = b.stats.count(c);
-  const double grid0 = b.stats.seconds("render/grid_build"), trace0 = b.stats.seconds("render/trace");
-  for (auto _ : state) {
-    s.seed = seed++;
-    tracer.render(s);
-  }
+  TimedRenders r = timed_renders(state, tracer, s,
+                                 {"bidir/camera_connections", "bidir/connections", "bidir/merges", "bidir/light_vertices"},
+                                 "render/grid_build");
   state.SetItemsProcessed(int64_t(state.iterations()) * b.pixels);
-  auto rate = [&](const char* counter) {
-    return benchmark::Counter(double(b.stats.count(counter) - before[counter]), benchmark::Counter::kIsRate);
-  };
+  auto rate = [&](const char* counter) { return benchmark::Counter(r.grew[counter], benchmark::Counter::kIsRate); };
   state.counters["camera_connections"] = rate("bidir/camera_connections");
   state.counters["connections"] = rate("bidir/connections");
   state.counters["merges"] = rate("bidir/merges");
   state.counters["grid_vertices"] = rate("bidir/light_vertices");
-  state.counters["grid_build_share"] =
-      (b.stats.seconds("render/grid_build") - grid0) / std::max(1e-9, b.stats.seconds("render/trace") - trace0);
+  state.counters["grid_build_share"] = r.timer_share;
   label(state, (std::string(bidir_technique_name(int(state.range(0)))) + ": light subpaths").c_str());
 }
 BENCHMARK(BM_BidirPass)->DenseRange(BIDIR_LT, BIDIR_VCM)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// mlt's steps: four mutations a pixel a render (after a render that compiles), the bootstrap of
-// 2^16 samples included; mutations per second and the acceptance of small and large steps.
+// mlt's steps: four mutations a pixel a render, the bootstrap of 2^16 samples included; mutations
+// per second and the acceptance of small and large steps.
 void BM_MltMutations(benchmark::State& state) {
   BidirBench& b = bench();
   Metropolis mlt(RenderInputs{b.ctx, b.scene, *b.embree, *b.device_scene},
@@ -99,21 +112,12 @@ void BM_MltMutations(benchmark::State& state) {
   RenderSettings s;
   s.spp = 4;
   s.max_depth = b.scene.max_depth;
-  uint32_t seed = 1;
-  mlt.render(s);  // untimed: PoCL compiles each kernel at its first launch
-  const char* const counters[] = {"mlt/small_steps", "mlt/small_steps_accepted", "mlt/large_steps",
-                                  "mlt/large_steps_accepted"};
-  std::map<std::string, uint64_t> before;
-  for (const char* c : counters) before[c] = b.stats.count(c);
-  for (auto _ : state) {
-    s.seed = seed++;
-    mlt.render(s);
-  }
-  auto count = [&](const char* counter) { return double(b.stats.count(counter) - before[counter]); };
-  const double small = count("mlt/small_steps"), large = count("mlt/large_steps");
+  TimedRenders r = timed_renders(state, mlt, s,
+                                 {"mlt/small_steps", "mlt/small_steps_accepted", "mlt/large_steps", "mlt/large_steps_accepted"});
+  const double small = r.grew["mlt/small_steps"], large = r.grew["mlt/large_steps"];
   state.SetItemsProcessed(int64_t(small + large));
-  state.counters["small_acceptance"] = count("mlt/small_steps_accepted") / std::max(1.0, small);
-  state.counters["large_acceptance"] = count("mlt/large_steps_accepted") / std::max(1.0, large);
+  state.counters["small_acceptance"] = r.grew["mlt/small_steps_accepted"] / std::max(1.0, small);
+  state.counters["large_acceptance"] = r.grew["mlt/large_steps_accepted"] / std::max(1.0, large);
   label(state, "mlt: mutations");
 }
 BENCHMARK(BM_MltMutations)->Unit(benchmark::kMillisecond)->UseRealTime();
