@@ -152,7 +152,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
                              ->group("Integrator parameters");
   param("--chains", "chains", "Markov chains run side by side (default: one a pixel, at most 32768)")->check(CLI::Range(1, 1 << 30));
-  param("--bootstrap", "bootstrap", "bootstrap samples of the normalization and the chains' starts (default 262144)")
+  param("--bootstrap", "bootstrap", "bootstrap samples of the normalization and the chains' starts (default: four a chain, at least 65536)")
       ->check(CLI::Range(1, 1 << 30));
   param("--sigma", "sigma", "small step: standard deviation of each primary sample's perturbation, in (0, 1] (default 0.01)")
       ->check(kFinitePositive);

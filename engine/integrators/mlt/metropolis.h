@@ -12,7 +12,7 @@
 // Parameters (IntegratorParams):
 //   chains               Markov chains run side by side, one work item each (default: one a
 //                        pixel, at most 32768)
-//   bootstrap            bootstrap samples (default 262144, at least one a chain)
+//   bootstrap            bootstrap samples (default: four a chain, at least 65536)
 //   sigma                small step: standard deviation of each dimension's perturbation (0.01)
 //   large_step           probability of a large step, a fresh uniform state (0.3)
 //   mutations_per_pixel  the render's length (default: --spp; --time may stop it earlier)

@@ -52,6 +52,8 @@ MetropolisSettings metropolis_settings(const IntegratorParams& params) {
 
 MetropolisSettings for_film(MetropolisSettings s, const Scene& scene) {
   if (s.chains == 0) s.chains = std::min(kDefaultChains, size_t(scene.camera.width) * scene.camera.height);
+  // The bootstrap seeds the chains; b gains every large step's sample as the render goes on.
+  if (s.bootstrap == 0) s.bootstrap = std::max(size_t(1) << 16, 4 * s.chains);
   return s;
 }
 
@@ -127,6 +129,7 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
   const size_t pixels = size_t(in_.scene.camera.width) * in_.scene.camera.height;
   chains_.emplace(in_.context, kernels_, program_, chains, dims, mutation);
   const uint32_t seed = chain_seed(settings.seed, cluster::rank());
+  ScopedTimer bootstrap_time(nullptr, "");  // a stopwatch
   const MarkovChains::Sample boot = contributes ? bootstrap(seed, evaluate) : MarkovChains::Sample{};
 
   // A pass: the steps that make about one mutation a pixel.
@@ -134,6 +137,7 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
   const uint32_t first_step = uint32_t(bootstrap_rounds()) + 1;
   RenderSettings loop = settings;
   if (settings_.mutations_per_pixel) loop.spp = *settings_.mutations_per_pixel;
+  if (loop.time_budget) loop.time_budget = std::max(0.0, *loop.time_budget - bootstrap_time.elapsed());
   Result result;
   size_t pending = 0;  // steps whose splats wait in the slots
   result.passes = run_progressive(loop, [&](int sample) {

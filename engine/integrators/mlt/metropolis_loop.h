@@ -4,7 +4,7 @@
 // position, value over the target f, and f); the loop does the rest:
 //   bootstrap  `bootstrap` fresh states, whose mean f estimates b (the target's integral over
 //              primary sample space); the chains start at bootstrap states drawn in proportion to
-//              f, and their current records are evaluated there;
+//              f, and their current records are evaluated there (its time counts against --time);
 //   steps      per pass, the steps that make about one mutation a pixel: propose, evaluate,
 //              accept, then splat every record of the current state with weight 1 - a and of the
 //              proposal with weight a (kernels/mlt/splats.h) into record r's film layer;
@@ -28,14 +28,14 @@ namespace gdr {
 struct MetropolisSettings {
   MltSettings mutation;
   size_t chains = 0;  // 0: one a pixel, at most kDefaultChains (resolve with for_film)
-  size_t bootstrap = size_t(1) << 18;
+  size_t bootstrap = 0;  // 0: four a chain, at least 65536 (resolve with for_film)
   std::optional<int> mutations_per_pixel;
 };
 // Their names (a function: other integrators' parameter lists are built from it at start-up).
 std::vector<std::string> metropolis_params();
 // The default chain count's cap: enough work items to fill a GPU, about 1 GiB of path state.
 constexpr size_t kDefaultChains = size_t(1) << 15;
-// `s` with its chain count resolved for the scene's film.
+// `s` with its chain and bootstrap counts resolved for the scene's film.
 MetropolisSettings for_film(MetropolisSettings s, const Scene& scene);
 MetropolisSettings metropolis_settings(const IntegratorParams& params);
 
