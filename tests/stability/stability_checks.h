@@ -10,6 +10,7 @@
 
 #include "scene/load_scene.h"
 #include "support/render.h"
+#include "support/test_scenes.h"
 
 namespace gdr::test {
 
@@ -47,6 +48,23 @@ int for_each_project_scene(int width, F&& f) {
     f(entry.path().string(), scene);
   }
   return scenes;
+}
+
+// A diffuse wall 16 x 16 pixels wide, lit by a point light (a delta position) and by a degenerate
+// (zero-area) emitting triangle, which can emit nothing.
+inline Scene point_light_beside_zero_area_emitter() {
+  SceneBuilder b;
+  int wall = b.material(diffuse_material(0.5f), "wall");
+  b.shape(quad_mesh({-5, -5, 10}, {-5, 5, 10}, {5, 5, 10}, {5, -5, 10}), wall, 0.0f, "wall");
+  b.shape(triangle_mesh({0, 0, 8}, {1, 1, 8}, {2, 2, 8}), wall, 10.0f, "zero-area light");
+  GdrLight point{};
+  point.type = LIGHT_POINT;
+  point.texture = -1;
+  point.triangle = -1;
+  point.radiance[0] = point.radiance[1] = point.radiance[2] = 20.0f;
+  point.position[2] = 5.0f;
+  b.scene().lights.push_back(point);
+  return b.finish(camera_looking_z(0, 0, 0, 40.0f, 16));
 }
 
 inline bool all_finite(const std::vector<float>& v) {

@@ -67,18 +67,7 @@ TEST(BidirStability, ProjectScenesAreFinite) {
 // A diffuse wall lit by a point light and by a degenerate (zero-area) emitting triangle: the
 // triangle starts no light subpath, the point light's do, and every pixel is finite.
 TEST(BidirStability, ZeroAreaLightAndPointLight) {
-  SceneBuilder b;
-  int wall = b.material(diffuse_material(0.5f), "wall");
-  b.shape(quad_mesh({-5, -5, 10}, {-5, 5, 10}, {5, 5, 10}, {5, -5, 10}), wall, 0.0f, "wall");
-  b.shape(triangle_mesh({0, 0, 8}, {1, 1, 8}, {2, 2, 8}), wall, 10.0f, "zero-area light");
-  GdrLight point{};
-  point.type = LIGHT_POINT;
-  point.texture = -1;
-  point.triangle = -1;
-  point.radiance[0] = point.radiance[1] = point.radiance[2] = 20.0f;
-  point.position[2] = 5.0f;
-  b.scene().lights.push_back(point);
-  Scene scene = b.finish(camera_looking_z(0, 0, 0, 40.0f, 16));
+  Scene scene = point_light_beside_zero_area_emitter();
   for (int technique : kTechniques) {
     BidirRun r;
     render_bidir(scene, -1, bidir_settings(technique, IntegratorParams{}), &r);
