@@ -368,7 +368,9 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
 
 // Connects the camera vertices queued in `connectable` to vertex j of their pixel's light subpath
 // (s = depth_y + 1 light vertices, t = depth_z + 1 camera vertices): the value and a shadow ray
-// between the two surfaces, added by path_shadow_add where unoccluded.
+// between the two surfaces, added by path_shadow_add where unoccluded. j = BIDIR_OWN_STRATEGY:
+// the stored vertex of the path's one strategy (multiplexed: a path connects once at most, so one
+// launch serves every stored vertex).
 __kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count, uint j, uint stride,
                            __global const uint* connectable, __global const GdrBidirVertex* camera_vertices,
                            __global const GdrBidirPathState* light_paths, __global const GdrBidirVertex* store,
@@ -378,8 +380,14 @@ __kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count,
   if (q >= count) return;
   uint slot = connectable[q];
   GdrBidirPathState light = light_paths[slot];
+  GdrBidirVertex z = camera_vertices[slot];
+  if (j == BIDIR_OWN_STRATEGY) {
+    if (z.depth + 1 != light.shown_t) return;
+    for (j = 0; j < (uint)light.stored && store[j * stride + slot].depth + 1 != light.shown_s; ++j) {
+    }
+  }
   if ((int)j >= light.stored) return;
-  GdrBidirVertex z = camera_vertices[slot], y = store[j * stride + slot];
+  GdrBidirVertex y = store[j * stride + slot];
   if (!segments_allowed(params.max_depth, z.depth + y.depth + 1) ||
       !bidir_strategy_shown(&light, y.depth + 1, z.depth + 1)) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);

@@ -26,6 +26,9 @@ typedef struct GdrBidirOptions {
   int pad0;
 } GdrBidirOptions;
 
+// bdpt_connect's vertex index that stands for the path's own (multiplexed) strategy's vertex.
+#define BIDIR_OWN_STRATEGY 0xFFFFFFFFu
+
 #define BIDIR_PATH_INFINITE 2  // a light subpath from a light at infinity (its first segment has no length)
 #define BIDIR_PATH_ALL_SPECULAR 4  // a camera subpath with delta scatterings only so far (pm's emission)
 

@@ -92,13 +92,14 @@ void BidirSubpaths::add_shadows(cl_uint count, const char* kind, Buffer<Vec4>& v
 
 void BidirSubpaths::connect(const GdrPtParams& p, int camera_depth, cl_uint connectable, Buffer<Vec4>& values) {
   // Vertex j of a light subpath lies j + 1 bounces or more from its light, and the connection
-  // adds a segment.
+  // adds a segment. A multiplexed path connects to one vertex at most: one launch finds it.
   const int last = std::min(stored_bound_, p.max_depth - camera_depth - 1);
-  for (int j = 0; j < last; ++j) {
+  for (int j = 0; j < (options_.multiplex ? std::min(last, 1) : last); ++j) {
     counters_.reset();
     connect_
-        .args(p, options_, connectable, cl_uint(j), cl_uint(capacity_), connectable_, camera_vertices_,
-              light_paths_, store_, shadow_rays_, shadow_values_, counters_.buffer(), in_.device_scene)
+        .args(p, options_, connectable, options_.multiplex ? BIDIR_OWN_STRATEGY : cl_uint(j), cl_uint(capacity_), connectable_,
+              camera_vertices_, light_paths_, store_, shadow_rays_, shadow_values_, counters_.buffer(),
+              in_.device_scene)
         .run(connectable);
     counters_.read();
     add_shadows(counters_[BIDIR_COUNTER_SHADOW_RAYS], "connection", values);
