@@ -113,6 +113,10 @@ TEST(Mlt, StatsCountTheSteps) {
   nlohmann::json j = stats.to_json();
   EXPECT_EQ(j["mlt"]["chains"], 2048);
   EXPECT_GT(j["mlt"]["normalization"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(j["mlt"]["acceptance"]["small_steps"].get<double>(),
+                   double(stats.count("mlt/small_steps_accepted")) / double(stats.count("mlt/small_steps")));
+  EXPECT_DOUBLE_EQ(j["mlt"]["acceptance"]["large_steps"].get<double>(),
+                   double(stats.count("mlt/large_steps_accepted")) / double(stats.count("mlt/large_steps")));
 }
 
 TEST(Mlt, ParametersAreChecked) {

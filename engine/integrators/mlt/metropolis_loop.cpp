@@ -166,8 +166,16 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
   result.normalization = uniform[1] > 0 ? double(uniform[0]) / uniform[1] : 0.0;
   result.steps = double(result.passes) * double(steps_per_pass);
   result.scale = result.steps > 0 ? result.normalization / (result.steps * double(chains)) : 0.0;
-  chains_->report(stats);
   if (stats) {
+    // This render's acceptance by mutation kind (the counters add up over renders on one stats).
+    const char* const kinds[] = {"mlt/small_steps", "mlt/small_steps_accepted", "mlt/large_steps",
+                                 "mlt/large_steps_accepted"};
+    std::vector<uint64_t> before;
+    for (const char* k : kinds) before.push_back(stats->count(k));
+    chains_->report(stats);
+    auto grew = [&](int i) { return double(stats->count(kinds[i]) - before[i]); };
+    stats->set("mlt/acceptance/small_steps", grew(0) > 0 ? grew(1) / grew(0) : 0.0);
+    stats->set("mlt/acceptance/large_steps", grew(2) > 0 ? grew(3) / grew(2) : 0.0);
     stats->set("mlt/chains", chains);
     stats->set("mlt/mutations_per_pixel", result.steps * double(chains) / double(pixels));
     stats->set("mlt/normalization", result.normalization);
