@@ -16,13 +16,6 @@ inline uint mlt_dims_read(const GdrMltParams* p, float u0) {
   return min(p->dims, 4u * (uint)GDR_PRIMARY_BLOCKS(n));
 }
 
-// A step where the target reads fewer dimensions than the state holds (GdrMltParams.lengths) works
-// on the dimensions the proposal reads alone: a state is its path length and the dimensions that
-// length reads, and the others are not part of it (their stale values are never read). A large
-// step draws the proposal's dimensions fresh; a small step moves those both lengths read and draws
-// the ones only the proposal's length reads fresh (uniform, density 1: the move back drops them),
-// so both steps are symmetric between the two states and the acceptance stays min(1, f(y) / f(x))
-// (Green's reversible jumps, with a Jacobian of 1).
 // Dimensions [d, d + 4) of chain c in a state buffer (those past dims read as 0, never written).
 inline float4 mlt_load_block(const GdrMltParams* p, __global const float* states, uint c, uint d) {
   float4 x = (float4)(0.0f);
@@ -42,6 +35,13 @@ inline void mlt_store_block(const GdrMltParams* p, __global float* states, uint 
   if (d + 3 < p->dims) states[i + 3 * n] = x.w;
 }
 
+// A step where the target reads fewer dimensions than the state holds (GdrMltParams.lengths) works
+// on the dimensions the proposal reads alone: a state is its path length and the dimensions that
+// length reads, and the others are not part of it (their stale values are never read). A large
+// step draws the proposal's dimensions fresh; a small step moves those both lengths read and draws
+// the ones only the proposal's length reads fresh (uniform, density 1: the move back drops them),
+// so both steps are symmetric between the two states and the acceptance stays min(1, f(y) / f(x))
+// (Green's reversible jumps, with a Jacobian of 1).
 __kernel void mlt_propose(GdrMltParams p, __global const float* current, __global float* proposed,
                           __global uint* counters) {
   uint c = get_global_id(0);
