@@ -35,15 +35,17 @@ inline void mlt_store_block(const GdrMltParams* p, __global float* states, uint 
   if (d + 3 < p->dims) states[i + 3 * n] = x.w;
 }
 
-// A step where the target reads fewer dimensions than the state holds (GdrMltParams.lengths) works
-// on the dimensions the proposal reads alone: a state is its path length and the dimensions that
-// length reads, and the others are not part of it (their stale values are never read). A large
-// step draws the proposal's dimensions fresh; a small step moves those both lengths read and draws
-// the ones only the proposal's length reads fresh (uniform, density 1: the move back drops them),
-// so both steps are symmetric between the two states and the acceptance stays min(1, f(y) / f(x))
-// (Green's reversible jumps, with a Jacobian of 1).
+// A step where the target reads fewer dimensions than the state holds works on the dimensions the
+// proposal reads alone: a state is the dimensions its path reads (GdrMltParams.lengths: those of
+// the length its first dimension picks; reported: the leading dimensions the caller found it
+// read, `held`), and the others are not part of it (their stale values are never read). A large
+// step draws the proposal's dimensions fresh; a small step moves those both states read and draws
+// the ones only the proposal reads fresh (uniform, density 1: the move back drops them), so both
+// steps are symmetric between the two states and the acceptance stays min(1, f(y) / f(x))
+// (Green's reversible jumps, with a Jacobian of 1). Reported, the proposal's reach is known only
+// once it is traced: every dimension past the current state's is drawn fresh.
 __kernel void mlt_propose(GdrMltParams p, __global const float* current, __global float* proposed,
-                          __global uint* counters) {
+                          __global const uint* held_dims, __global uint* counters) {
   uint c = get_global_id(0);
   if (c >= p.chains) return;
   int is_large = mlt_control(&p, c).large;
@@ -51,7 +53,7 @@ __kernel void mlt_propose(GdrMltParams p, __global const float* current, __globa
   float4 x = mlt_load_block(&p, current, c, 0);
   float4 y = mlt_mutate_block(&p, c, 0, is_large, x);
   mlt_store_block(&p, proposed, c, 0, y);
-  uint held = mlt_dims_read(&p, x.x), dims = mlt_dims_read(&p, y.x);
+  uint held = p.reported ? held_dims[c] : mlt_dims_read(&p, x.x), dims = mlt_dims_read(&p, y.x);
   for (uint d = 4; d < dims; d += 4) {
     int fresh = is_large || d >= held;
     float4 from = fresh ? (float4)(0.0f) : mlt_load_block(&p, current, c, d);
@@ -63,7 +65,8 @@ __kernel void mlt_propose(GdrMltParams p, __global const float* current, __globa
 // states, whose mean target estimates the target's integral (Kelemen et al.'s normalization).
 __kernel void mlt_accept(GdrMltParams p, __global float* current, __global const float* proposed,
                          __global float* f_current, __global const float* f_proposed, __global float2* weights,
-                         __global float2* large_targets, __global uint* counters) {
+                         __global float2* large_targets, __global uint* held_dims, __global const uint* read_dims,
+                         __global uint* counters) {
   uint c = get_global_id(0);
   if (c >= p.chains) return;
   float fx = f_current[c], fy = f_proposed[c];
@@ -75,7 +78,8 @@ __kernel void mlt_accept(GdrMltParams p, __global float* current, __global const
   MltControl k = mlt_control(&p, c);
   if (k.large) large_targets[c] += (float2)(usable ? fy : 0.0f, 1.0f);
   if (!(k.accept < a)) return;
-  uint dims = mlt_dims_read(&p, proposed[c]);
+  uint dims = p.reported ? min(p.dims, read_dims[c]) : mlt_dims_read(&p, proposed[c]);
+  if (p.reported) held_dims[c] = dims;
   for (uint d = 0; d < dims; ++d) {
     size_t i = (size_t)d * p.chains + c;
     current[i] = proposed[i];

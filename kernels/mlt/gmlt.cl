@@ -42,12 +42,15 @@ inline void gmlt_record(__global GdrSplat* records, uint chains, uint c, int r, 
 // the pair's two shifts is already in them); a pair with a pixel outside the sampled region does
 // not exist. The target: the four differences' magnitudes plus alpha times a quarter of the
 // primal's (Lehtinen et al.'s form), so that a state whose differences vanish still has f > 0
-// where it adds to the coarse image. Records hold value / f.
+// where it adds to the coarse image. Records hold value / f. read[c]: the dimensions the group
+// read at most, the camera blocks up to the BSDF block of the depth its base path ended at.
 __kernel void gmlt_contribution(__global const GdrCamera* camera, GdrGptParams params, GdrPrimaryLayout layout,
                                 float alpha, __global const float* states, __global const float4* acc,
-                                __global GdrSplat* records, __global float* f) {
+                                __global const GptBaseState* bases, __global GdrSplat* records, __global float* f,
+                                __global uint* read) {
   uint c = get_global_id(0);
   if (c >= layout.chains) return;
+  read[c] = 4u * min(layout.blocks, RNG_BLOCK_BSDF(bases[c].path.depth) + 1u);
   GdrCamera cam = *camera;
   PathSampler ps = path_sampler_bound(params.path.seed, c, params.path.sample, states, layout);
   float2 x = camera_primary_raster(&cam, &ps);

@@ -17,7 +17,8 @@ typedef struct GdrMltParams {
                            // path's (shared/sampler_types.h), whose first dimension picks its
                            // length of 1 .. n segments and which reads the first
                            // 4 GDR_PRIMARY_BLOCKS(length) dimensions alone (mlt/chains.h)
-  int pad0;
+  unsigned int reported;   // 1: the caller reports how many leading dimensions each evaluated
+                           // state read (its target reads no others)
 } GdrMltParams;
 
 // Proposals and acceptances by mutation kind (atomic_inc).

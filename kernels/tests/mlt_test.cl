@@ -31,3 +31,15 @@ __kernel void mlt_test_lengths_target(uint chains, __global const float* states,
   int two = u0 >= 0.5f;
   f[c] = mlt_test_lengths_f(u0, states[5 * chains + c], two ? states[20 * chains + c] : 0.0f, two);
 }
+
+// The same target over states that report what they read (GdrMltParams.reported): dimension 0
+// decides whether dimension 20 is read, and the state reports 16 or 24 leading dimensions.
+__kernel void mlt_test_reported_target(uint chains, __global const float* states, __global float* f,
+                                       __global uint* read) {
+  uint c = get_global_id(0);
+  if (c >= chains) return;
+  float u0 = states[c];
+  int two = u0 >= 0.5f;
+  f[c] = mlt_test_lengths_f(u0, states[5 * chains + c], two ? states[20 * chains + c] : 0.0f, two);
+  read[c] = two ? 24u : 16u;
+}

@@ -227,15 +227,19 @@ int lengths_cell(double u0, double u20) {
   return kCells / 2 + j * (kCells / 2) + (i - kCells / 2);
 }
 
-TEST(MarkovChains, PathLengthsReadingFewerDimensionsKeepTheTarget) {
+// Runs the cases over `kernel`, a target of states of one or two lengths that picks them (lengths)
+// or reports what it read (reported: it writes the dimensions read).
+void expect_lengths_keep_the_target(const char* kernel, bool reported) {
   Context& ctx = test::default_context();
   Scene scene = test::furnace_scene(0.5f, 1.0f, 8);
   KernelFactory kernels(ctx, scene);
   const size_t dims = 24;
   const int cells = kCells / 2 + kCells * kCells / 2;
-  Kernel f = kernels.make(kProgram, "mlt_test_lengths_target");
-  for (const MltSettings& settings : {MltSettings{0.1f, 0.0f, 2}, MltSettings{0.01f, 0.3f, 2}}) {
-    const std::string name = settings.large_step > 0 ? "default mix" : "small steps of 0.1";
+  Kernel f = kernels.make(kProgram, kernel);
+  for (MltSettings settings : {MltSettings{0.1f, 0.0f}, MltSettings{0.01f, 0.3f}}) {
+    const std::string name = std::string(kernel) + (settings.large_step > 0 ? ", default mix" : ", small steps of 0.1");
+    settings.lengths = reported ? 0 : 2;
+    settings.reported = reported;
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     std::vector<float> start(kChains * dims);
@@ -251,10 +255,14 @@ TEST(MarkovChains, PathLengthsReadingFewerDimensionsKeepTheTarget) {
     }
     MarkovChains chains(ctx, kernels, kProgram, kChains, dims, settings);
     chains.current().write(start);
-    f.args(cl_uint(kChains), chains.current(), chains.f_current()).run(kChains);
+    auto evaluate = [&](const Buffer<float>& states, Buffer<float>& target, Buffer<cl_uint>& read) {
+      if (reported) f.args(cl_uint(kChains), states, target, read).run(kChains);
+      else f.args(cl_uint(kChains), states, target).run(kChains);
+    };
+    evaluate(chains.current(), chains.f_current(), chains.current_read());
     for (int it = 0; it < 64; ++it) {
       chains.propose(17, uint32_t(it));
-      f.args(cl_uint(kChains), chains.proposed(), chains.f_proposed()).run(kChains);
+      evaluate(chains.proposed(), chains.f_proposed(), chains.proposed_read());
       chains.accept(17, uint32_t(it));
     }
     std::vector<float> s = chains.current().read();
@@ -275,6 +283,14 @@ TEST(MarkovChains, PathLengthsReadingFewerDimensionsKeepTheTarget) {
     EXPECT_GT(r.p_value, 1e-3) << name << ": chi2 = " << r.statistic << ", dof = " << r.dof;
   }
 }
+
+TEST(MarkovChains, PathLengthsReadingFewerDimensionsKeepTheTarget) {
+  expect_lengths_keep_the_target("mlt_test_lengths_target", false);
+}
+
+// The same states when the target reports what each read instead (G-PT's groups: the depth a
+// path reached decides it).
+TEST(MarkovChains, ReportedReachKeepsTheTarget) { expect_lengths_keep_the_target("mlt_test_reported_target", true); }
 
 }  // namespace
 }  // namespace gdr

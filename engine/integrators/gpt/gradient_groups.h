@@ -46,6 +46,8 @@ class GradientGroups {
   const KernelFactory& kernels() const { return kernels_; }
   size_t capacity() const { return capacity_; }
   Buffer<Vec4>& acc() { return acc_; }
+  // The base paths' states after a trace (a group's path.depth: the depth it ended at).
+  const Buffer<GptBaseState>& bases() const { return bases_; }
 
   // The groups of paths [p.path.first_pixel, + p.path.pixel_count), their sums into acc.
   // `aux`: the base camera rays' first hits.

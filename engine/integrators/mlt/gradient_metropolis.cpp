@@ -74,13 +74,20 @@ GradientImages GradientMetropolis::render_gradients(const RenderSettings& settin
   film_.clear();
   const GdrGptParams base = groups_.params(settings, 0, 0, uint32_t(chains));
   const bool contributes = settings.max_depth != 0 && base.path.light_count > 0;
+  // A group reads the camera blocks of its base path's depth alone: its chain reports them, and a
+  // step moves those and draws the rest fresh.
+  MltSettings mutation = settings_.loop.mutation;
+  mutation.reported = true;
   MetropolisLoop::Result r = loop_.run(
-      settings, size_t(4) * layout.blocks, settings_.loop.mutation, contributes,
-      [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f) {
+      settings, size_t(4) * layout.blocks, mutation, contributes,
+      [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f,
+          Buffer<cl_uint>& read) {
         GdrGptParams p = base;
         p.path.sample = iteration;
         groups_.trace(p, PrimarySamples(states, layout), nullptr);
-        contribution_.args(in_.device_scene.camera(), p, layout, settings_.target_alpha, states, groups_.acc(), records, f)
+        contribution_
+            .args(in_.device_scene.camera(), p, layout, settings_.target_alpha, states, groups_.acc(),
+                  groups_.bases(), records, f, read)
             .run(chains);
       });
   normalization_ = r.normalization;

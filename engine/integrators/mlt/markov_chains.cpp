@@ -21,6 +21,8 @@ MarkovChains::MarkovChains(Context& context, const KernelFactory& kernels, const
       f_proposed_(context, chains),
       weights_(context, chains),
       large_targets_(context, chains),
+      held_(context, settings.reported ? chains : 0),
+      read_(context, settings.reported ? chains : 0),
       counters_(context, GDR_COUNTER_NAMES(MLT_COUNTERS)),
       uncounted_(context, GDR_COUNTER_NAMES(MLT_COUNTERS)) {
   if (chains == 0 || dims == 0) throw Error("Markov chains: need at least one chain of one dimension");
@@ -29,6 +31,7 @@ MarkovChains::MarkovChains(Context& context, const KernelFactory& kernels, const
   }
   current_.fill(0.0f);  // a defined first state for propose_fresh to start from
   large_targets_.fill(cl_float2{});
+  held_.fill(0u);
   counters_.reset();
 }
 
@@ -41,15 +44,17 @@ GdrMltParams MarkovChains::params(uint32_t seed, uint32_t iteration, float large
   p.sigma = settings_.sigma;
   p.large_step = large_step;
   p.lengths = settings_.lengths;
+  p.reported = settings_.reported ? 1u : 0u;
   return p;
 }
 
 void MarkovChains::propose(uint32_t seed, uint32_t iteration) {
-  propose_.args(params(seed, iteration, settings_.large_step), current_, proposed_, counters_.buffer()).run(chains_);
+  propose_.args(params(seed, iteration, settings_.large_step), current_, proposed_, held_, counters_.buffer())
+      .run(chains_);
 }
 
 void MarkovChains::propose_fresh(uint32_t seed, uint32_t iteration) {
-  propose_.args(params(seed, iteration, 1.0f), current_, proposed_, uncounted_.buffer()).run(chains_);
+  propose_.args(params(seed, iteration, 1.0f), current_, proposed_, held_, uncounted_.buffer()).run(chains_);
 }
 
 void MarkovChains::start_at(uint32_t seed, const std::vector<cl_uint2>& picks) {
@@ -59,7 +64,9 @@ void MarkovChains::start_at(uint32_t seed, const std::vector<cl_uint2>& picks) {
 }
 
 void MarkovChains::accept(uint32_t seed, uint32_t iteration) {
-  accept_.args(params(seed, iteration, settings_.large_step), current_, proposed_, f_current_, f_proposed_, weights_, large_targets_, counters_.buffer())
+  accept_
+      .args(params(seed, iteration, settings_.large_step), current_, proposed_, f_current_, f_proposed_, weights_,
+            large_targets_, held_, read_, counters_.buffer())
       .run(chains_);
 }
 

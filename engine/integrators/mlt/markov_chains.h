@@ -19,6 +19,9 @@ struct MltSettings {
   // 0: the target reads every dimension; n: the states are bidirectional paths of 1 .. n
   // segments, and a step touches the dimensions of their lengths alone (GdrMltParams.lengths).
   unsigned lengths = 0;
+  // The caller reports how many leading dimensions each state it evaluates read (current_read,
+  // proposed_read); a small step moves those of the current state and draws the others fresh.
+  bool reported = false;
 };
 
 class MarkovChains {
@@ -34,6 +37,10 @@ class MarkovChains {
   // The proposals of this step, and the targets the caller evaluates there.
   const Buffer<float>& proposed() const { return proposed_; }
   Buffer<float>& f_proposed() { return f_proposed_; }
+  // With MltSettings::reported, the leading dimensions each current state and each proposal
+  // read, as the caller reports them when it evaluates them (a chain each).
+  Buffer<cl_uint>& current_read() { return held_; }
+  Buffer<cl_uint>& proposed_read() { return read_; }
   // After accept(): per chain, (weight of the current state before the step, weight of the proposal).
   const Buffer<cl_float2>& weights() const { return weights_; }
   // The sum of f over the large steps' proposals so far, and their count: uniform samples of
@@ -73,6 +80,7 @@ class MarkovChains {
   Kernel propose_, accept_, seed_;
   Buffer<float> current_, proposed_, f_current_, f_proposed_;
   Buffer<cl_float2> weights_, large_targets_;
+  Buffer<cl_uint> held_, read_;
   DeviceCounters counters_;
   DeviceCounters uncounted_;  // propose_fresh's: not steps of the chains
 };

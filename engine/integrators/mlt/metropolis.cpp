@@ -57,7 +57,8 @@ RenderResult Metropolis::render(const RenderSettings& settings) {
   light_ = light_subpaths_allowed(settings.max_depth) && base.light_count > 0;
   MetropolisLoop::Result r = loop_.run(
       settings, size_t(4) * layout_.blocks, mutation, segments > 0 && base.light_count > 0,
-      [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f) {
+      [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f,
+          Buffer<cl_uint>&) {
         GdrPtParams p = base;
         p.sample = iteration;
         evaluate(p, states, records, f);

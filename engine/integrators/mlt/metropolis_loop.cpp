@@ -87,7 +87,7 @@ MarkovChains::Sample MetropolisLoop::bootstrap(uint32_t seed, const Evaluate& ev
   double total = 0;
   for (size_t r = 0; r < bootstrap_rounds(); ++r) {
     chains_->propose_fresh(seed, uint32_t(r));
-    evaluate(uint32_t(r), chains_->proposed(), proposed_, chains_->f_proposed());
+    evaluate(uint32_t(r), chains_->proposed(), proposed_, chains_->f_proposed(), chains_->proposed_read());
     for (float f : chains_->f_proposed().read()) cumulative.push_back(total += f);
   }
   if (!(total > 0)) return {0, double(cumulative.size())};
@@ -102,7 +102,7 @@ MarkovChains::Sample MetropolisLoop::bootstrap(uint32_t seed, const Evaluate& ev
     pick = cl_uint2{{cl_uint(i % chains), cl_uint(i / chains)}};
   }
   chains_->start_at(seed, picks);
-  evaluate(uint32_t(bootstrap_rounds()), chains_->current(), current_, chains_->f_current());
+  evaluate(uint32_t(bootstrap_rounds()), chains_->current(), current_, chains_->f_current(), chains_->current_read());
   return {total, double(cumulative.size())};
 }
 
@@ -146,7 +146,7 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
     for (size_t j = 0; j < steps_per_pass; ++j) {
       const uint32_t step = first_step + uint32_t(size_t(sample) * steps_per_pass + j);
       chains_->propose(seed, step);
-      evaluate(step, chains_->proposed(), proposed_, chains_->f_proposed());
+      evaluate(step, chains_->proposed(), proposed_, chains_->f_proposed(), chains_->proposed_read());
       chains_->accept(seed, step);
       splat(seed, step, pending);
       if (++pending == steps_per_gather_) {

@@ -42,9 +42,10 @@ MetropolisSettings metropolis_settings(const IntegratorParams& params);
 class MetropolisLoop {
  public:
   // Traces the paths of `states` at `iteration` (the key of their numbers not in the states) and
-  // writes each chain's records (record r of chain c at r * chains + c) and f.
+  // writes each chain's records (record r of chain c at r * chains + c) and f, and with
+  // MltSettings::reported the leading dimensions each state read into `read`.
   using Evaluate = std::function<void(uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records,
-                                      Buffer<float>& f)>;
+                                      Buffer<float>& f, Buffer<cl_uint>& read)>;
 
   // `program` holds the loop's kernels (mlt/chains.h, mlt/splats.h, path/splat.h); record r
   // splats into layers[r] (a film layer of the camera's size).
