@@ -1,8 +1,9 @@
-// Where a path's primary-sample-space numbers lie when Metropolis chains drive the bidirectional
-// kernels (kernels/mlt), for the sampler seam (sampling/path_sampler.h). A chain's state holds
-// `blocks` blocks of four dimensions, ordered by the path length that first reads them
-// (sampling/dimensions.h: primary_block_index), so that a path of n segments reads the first
-// GDR_PRIMARY_BLOCKS(n) blocks alone and a mutation need only touch those.
+// Where a path's primary-sample-space numbers lie when Metropolis chains (kernels/mlt) drive the
+// bidirectional kernels or G-PT's groups, for the sampler seam (sampling/path_sampler.h). A
+// chain's state holds `blocks` blocks of four dimensions. For bidirectional paths they are ordered
+// by the path length that first reads them (sampling/dimensions.h: primary_block_index), so that
+// a path of n segments reads the first GDR_PRIMARY_BLOCKS(n) blocks alone and a mutation need
+// only touch those; camera paths alone (camera_only) hold the camera's blocks in their order.
 #pragma once
 
 typedef struct GdrPrimaryLayout {
