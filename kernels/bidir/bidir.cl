@@ -230,6 +230,15 @@ __kernel void bidir_camera_blocked(uint count, __global const GdrRay* shadow_ray
   if (!shadow_unoccluded(shadow_rays[k].tfar)) splat_drop(&splats[shadow_rays[k].id]);
 }
 
+// Adds each path's splat slot into its entry of `sums` (what its light vertices seen by the camera
+// carry, wherever they land) and empties the slot.
+__kernel void bidir_splats_to_paths(uint count, __global GdrSplat* splats, __global float4* sums) {
+  uint k = get_global_id(0);
+  if (k >= count || !splats[k].valid) return;
+  sums[k] += (float4)(vload3(0, splats[k].value), 0.0f);
+  splat_drop(&splats[k]);
+}
+
 // The camera subpaths of bdpt, pm and vcm for pixels [first_pixel, first_pixel + pixel_count) (or
 // Metropolis chains: the film position is then a primary sample): the ray, the state and the MIS
 // sums of the camera vertex. Rays are counted in BIDIR_COUNTER_NEXT_RAYS.

@@ -24,6 +24,7 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
       shadow_add_(kernels_.make(kProgram, "path_shadow_add")),
       grid_keys_(kernels_.make(kProgram, "vcm_grid_keys")),
       merge_(kernels_.make(kProgram, "vcm_merge")),
+      splats_to_paths_(kernels_.make(kProgram, "bidir_splats_to_paths")),
       capacity_(capacity),
       store_vertices_(lt() ? 0 : kBdptMaxSegments - 1),
       queues_(in.context, capacity_, true),
@@ -68,6 +69,8 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
       camera_blocked_.args(shadows, shadow_rays_, sink.splats.slots()).run(shadows);
       if (sink.gather_into) {
         sink.splats.gather(in_.device_scene.camera(), in_.scene.camera.height, p.pixel_count, *sink.gather_into);
+      } else if (sink.path_sums) {
+        splats_to_paths_.args(p.pixel_count, sink.splats.slots(), *sink.path_sums).run(p.pixel_count);
       }
     }
     active = counters_[BIDIR_COUNTER_NEXT_RAYS];

@@ -6,8 +6,9 @@
 //
 // Where contributions go (BidirSink): the camera subpaths add into `values` at their path's index
 // (the pixel, or the chain); light vertices seen by the camera (t = 1) write the splat slot of
-// their path, which gather_into (a film layer) receives after every light bounce, or, without
-// one, the caller reads (one strategy per path under multiplexing: at most one splat a path).
+// their path, which after every light bounce gather_into (a film layer) receives, or path_sums
+// adds into its path's entry wherever it lands, or, without either, the caller reads (one
+// strategy per path under multiplexing: at most one splat a path).
 #pragma once
 #include <optional>
 
@@ -31,6 +32,7 @@ struct BidirSink {
   Buffer<Vec4>& values;
   SplatFilm& splats;
   Buffer<Vec4>* gather_into = nullptr;
+  Buffer<Vec4>* path_sums = nullptr;
 };
 
 class BidirSubpaths {
@@ -71,7 +73,7 @@ class BidirSubpaths {
   int technique_;
   KernelFactory kernels_;
   Kernel lt_camera_, lt_direct_, emit_, light_shade_, camera_blocked_;
-  Kernel generate_, camera_shade_, connect_, shadow_add_, grid_keys_, merge_;
+  Kernel generate_, camera_shade_, connect_, shadow_add_, grid_keys_, merge_, splats_to_paths_;
   GdrBidirOptions options_{};  // this batch's
   PrimarySamples primary_;     // this batch's
   size_t capacity_;      // subpaths of each kind in flight at once

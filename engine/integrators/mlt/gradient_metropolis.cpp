@@ -97,7 +97,8 @@ GradientImages GradientMetropolis::render_gradients(const RenderSettings& settin
   out.width = film_.width();
   out.height = film_.height();
   out.samples = r.passes;
-  const float scale = float(r.scale);
+  const float scale = float(r.scale(r.normalization));
+  if (stats) stats->set("mlt/normalization", r.normalization);
   out.dx = reduced_rgb(film_["dx"], scale, stats);
   out.dy = reduced_rgb(film_["dy"], scale, stats);
   out.direct = reduced_rgb(film_["direct"], scale, stats);

@@ -5,14 +5,18 @@
 // length, the one strategy (s, t) it is sampled by, and the numbers of its camera and light
 // subpaths. The target f is the luminance of that strategy's MIS-weighted contribution over its
 // selection probability, and its one contribution record is that contribution at its film
-// position (where the light vertex projects for t = 1). The chains, the bootstrap, the steps and
-// the normalization are the Metropolis loop's (metropolis_loop.h): a pass is about one mutation
-// a pixel, so --spp (or mutations_per_pixel) counts mutations a pixel.
+// position (where the light vertex projects for t = 1). The chains, the bootstrap and the steps
+// are the Metropolis loop's (metropolis_loop.h): a pass is about one mutation a pixel, so --spp
+// (or mutations_per_pixel) counts mutations a pixel. The normalization b, the integral of f, is
+// the image's luminance summed over its pixels: it is estimated apart, as Mitsuba's PSSMLT does,
+// from `bootstrap` full bidirectional samples (every strategy of every length, MIS-weighted, at
+// uniform film positions), whose luminance varies far less than a multiplexed path's f.
 //
 // Parameters (IntegratorParams):
 //   chains               Markov chains run side by side, one work item each (default: one a
 //                        pixel, at most 32768)
-//   bootstrap            bootstrap samples (default: four a chain, at least 65536)
+//   bootstrap            bootstrap samples (default: four a chain, at least 65536), and at least as
+//                        many full bidirectional samples for b
 //   sigma                small step: standard deviation of each dimension's perturbation (0.01)
 //   large_step           probability of a large step, a fresh uniform state (0.3)
 //   mutations_per_pixel  the render's length (default: --spp; --time may stop it earlier)
@@ -51,16 +55,20 @@ class Metropolis : public Integrator {
   static constexpr const char* kProgram = "mlt/mlt.cl";
   // Traces the paths of `states` and writes each chain's contribution record and f.
   void evaluate(const GdrPtParams& p, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f);
+  // b from full bidirectional samples: the sum of their luminances and their count (all ranks').
+  MarkovChains::Sample image_luminance(const GdrPtParams& base, uint32_t seed);
 
   RenderInputs in_;
   MltIntegratorSettings settings_;
   BidirSubpaths subpaths_;
-  Kernel contribution_;
+  Kernel contribution_, uniform_states_, image_sample_;
   GdrBidirOptions options_{};
   GdrPrimaryLayout layout_{};
   bool light_ = false;  // light subpaths can take part
   Buffer<Vec4> values_;  // camera subpaths' contributions, a chain each
   SplatFilm found_;      // t = 1 contributions, a slot a chain (never gathered)
+  Buffer<Vec4> light_sums_;     // image_luminance: a path's t = 1 contributions
+  Buffer<float> sample_states_, sample_f_;  // image_luminance's states and luminances
   Film film_;
   MetropolisLoop loop_;
   double normalization_ = 0;

@@ -165,7 +165,7 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
   cluster::sum_to_root(uniform, stats);
   result.normalization = uniform[1] > 0 ? double(uniform[0]) / uniform[1] : 0.0;
   result.steps = double(result.passes) * double(steps_per_pass);
-  result.scale = result.steps > 0 ? result.normalization / (result.steps * double(chains)) : 0.0;
+  result.chains = chains;
   if (stats) {
     // This render's acceptance by mutation kind (the counters add up over renders on one stats).
     const char* const kinds[] = {"mlt/small_steps", "mlt/small_steps_accepted", "mlt/large_steps",
@@ -178,8 +178,8 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
     stats->set("mlt/acceptance/large_steps", grew(2) > 0 ? grew(3) / grew(2) : 0.0);
     stats->set("mlt/chains", chains);
     stats->set("mlt/mutations_per_pixel", result.steps * double(chains) / double(pixels));
-    stats->set("mlt/normalization", result.normalization);
-    stats->set("mlt/normalization_samples", double(uniform[1]));
+    stats->set("mlt/target_integral", result.normalization);
+    stats->set("mlt/target_integral_samples", double(uniform[1]));
     stats->add_count("mlt/bootstrap_samples", uint64_t(boot.count));
     stats->set("render/spp", result.passes);
   }

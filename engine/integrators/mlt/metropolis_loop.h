@@ -8,8 +8,10 @@
 //   steps      per pass, the steps that make about one mutation a pixel: propose, evaluate,
 //              accept, then splat every record of the current state with weight 1 - a and of the
 //              proposal with weight a (kernels/mlt/splats.h) into record r's film layer;
-//   b          from every uniform sample of all ranks: the bootstrap's and the large steps'.
-// The film layers then hold sums whose image is b / (steps x chains) times them (scale()).
+//   b          the target's integral, from every uniform sample of all ranks: the bootstrap's and
+//              the large steps'.
+// The film layers then hold sums whose image is b / (steps x chains) times them (Result::scale;
+// an integrator with a better estimate of b gives it there).
 // Under MPI every rank runs chains of its own (their numbers keyed by its rank).
 #pragma once
 #include <functional>
@@ -56,7 +58,9 @@ class MetropolisLoop {
     int passes = 0;             // of all ranks
     double normalization = 0;   // b
     double steps = 0;           // chain steps of all ranks, over the chains
-    double scale = 0;           // what turns the layers' sums into the image: b / (steps x chains)
+    size_t chains = 0;
+    // What turns the layers' sums into the image: b / (steps x chains).
+    double scale(double b) const { return steps > 0 ? b / (steps * double(chains)) : 0.0; }
   };
   // The chains hold states of `dims` dimensions (`mutation.lengths` as MltSettings say); the
   // bootstrap runs when `contributes` (else the layers stay black).
