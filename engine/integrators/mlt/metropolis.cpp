@@ -89,7 +89,8 @@ RenderResult Metropolis::render(const RenderSettings& settings) {
   base.max_depth = segments;
   light_ = light_subpaths_allowed(settings.max_depth) && base.light_count > 0;
   const bool contributes = segments > 0 && base.light_count > 0;
-  if (sample_states_.size() != chains * 4 * layout_.blocks) sample_states_ = Buffer<float>(in_.context, chains * 4 * layout_.blocks);
+  const size_t dims = size_t(4) * layout_.blocks;
+  if (sample_states_.size() != chains * dims) sample_states_ = Buffer<float>(in_.context, chains * dims);
   // The samples' own numbers: apart from the chains' and on every rank.
   const uint32_t sample_seed = (settings.seed ^ 0x62u) + 0x9E3779B9u * uint32_t(cluster::rank());
   ScopedTimer normalization_time(nullptr, "");  // a stopwatch: it counts against --time
@@ -97,7 +98,7 @@ RenderResult Metropolis::render(const RenderSettings& settings) {
   RenderSettings loop = settings;
   if (loop.time_budget) loop.time_budget = std::max(0.0, *loop.time_budget - normalization_time.elapsed());
   MetropolisLoop::Result r = loop_.run(
-      loop, size_t(4) * layout_.blocks, mutation, contributes,
+      loop, dims, mutation, contributes,
       [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f,
           Buffer<cl_uint>&) {
         GdrPtParams p = base;
