@@ -160,6 +160,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(kFiniteNonNegative);
   param("--mutations-per-pixel", "mutations_per_pixel", "the render's length in mutations a pixel (default: --spp)")
       ->check(CLI::Range(1, 1 << 30));
+  param("--start-cap", "start_cap",
+        "k > 0: the chains' start weights capped at the bootstrap's k-th largest target (fewer chains stuck on "
+        "a lone bright sample, a start further from the stationary one; default 0: off)")
+      ->check(CLI::Range(0, 1 << 30));
   param("--target-alpha", "target_alpha",
         "gmlt: weight of the primal against the gradients in the chains' target (default 0.2)")
       ->check(kFinitePositive);

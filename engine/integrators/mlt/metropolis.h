@@ -20,6 +20,8 @@
 //   sigma                small step: standard deviation of each dimension's perturbation (0.01)
 //   large_step           probability of a large step, a fresh uniform state (0.3)
 //   mutations_per_pixel  the render's length (default: --spp; --time may stop it earlier)
+//   start_cap            k > 0: the chains' start weights capped at the bootstrap's k-th largest f
+//                        (metropolis_loop.cpp: bootstrap; default 0, off)
 //   mis                  power (default) | balance: the strategies' weights
 #pragma once
 #include <string>

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <random>
 
 #include "cluster/ranks.h"
@@ -15,6 +17,7 @@ namespace {
 // Splat slots a record gathers at once (each step writes two a chain): the sort's batch. Larger
 // batches gather slower on PoCL (2^18 slots a batch took 2 to 3 times as long a slot).
 constexpr size_t kSplatSlots = size_t(1) << 16;
+
 
 size_t whole_param(const IntegratorParams& params, const std::string& name, size_t fallback, size_t lowest) {
   if (!params.has(name)) return fallback;
@@ -36,7 +39,7 @@ uint32_t chain_seed(uint32_t seed, int rank) {
 }  // namespace
 
 std::vector<std::string> metropolis_params() {
-  return {"chains", "bootstrap", "sigma", "large_step", "mutations_per_pixel"};
+  return {"chains", "bootstrap", "sigma", "large_step", "mutations_per_pixel", "start_cap"};
 }
 
 MetropolisSettings metropolis_settings(const IntegratorParams& params) {
@@ -48,6 +51,7 @@ MetropolisSettings metropolis_settings(const IntegratorParams& params) {
   s.chains = whole_param(params, "chains", s.chains, 1);
   s.bootstrap = whole_param(params, "bootstrap", s.bootstrap, 1);
   if (params.has("mutations_per_pixel")) s.mutations_per_pixel = int(whole_param(params, "mutations_per_pixel", 1, 1));
+  s.start_cap = whole_param(params, "start_cap", 0, 0);
   return s;
 }
 
@@ -82,19 +86,37 @@ size_t MetropolisLoop::bootstrap_rounds() const {
 MarkovChains::Sample MetropolisLoop::bootstrap(uint32_t seed, const Evaluate& evaluate) {
   ScopedTimer timer(in_.context.stats(), "render/mlt_bootstrap");
   const size_t chains = settings_.chains;
-  std::vector<double> cumulative;  // of f over the bootstrap samples, round by round
-  cumulative.reserve(bootstrap_rounds() * chains);
+  std::vector<float> f;  // over the bootstrap samples, round by round
+  f.reserve(bootstrap_rounds() * chains);
   double total = 0;
   for (size_t r = 0; r < bootstrap_rounds(); ++r) {
     chains_->propose_fresh(seed, uint32_t(r));
     evaluate(uint32_t(r), chains_->proposed(), proposed_, chains_->f_proposed(), chains_->proposed_read());
-    for (float f : chains_->f_proposed().read()) cumulative.push_back(total += f);
+    for (float v : chains_->f_proposed().read()) {
+      f.push_back(v);
+      total += v;
+    }
   }
-  if (!(total > 0)) return {0, double(cumulative.size())};
+  if (!(total > 0)) return {0, double(f.size())};
   // Each chain starts at a bootstrap sample drawn in proportion to f (resampling: the chains start
-  // close to their stationary distribution instead of burning in).
+  // close to their stationary distribution instead of burning in). With start_cap k, f is capped
+  // at its k-th largest value there: a lone sample far brighter than every other (a path whose
+  // neighbours are much darker, which a chain leaves only after many steps) would start a share of
+  // the chains that its tiny neighbourhood does not hold, all stuck there, a bright blotch until
+  // they leave. The cap trades that for a start further from the stationary distribution where a
+  // bright region only a few samples found (a small emitter seen directly) loses its share too.
+  float cap = std::numeric_limits<float>::infinity();
+  if (settings_.start_cap > 0) {
+    std::vector<float> sorted = f;
+    const size_t rank = std::min(settings_.start_cap, sorted.size()) - 1;
+    std::nth_element(sorted.begin(), sorted.begin() + rank, sorted.end(), std::greater<>());
+    cap = sorted[rank];
+  }
+  std::vector<double> cumulative(f.size());
+  double capped = 0;
+  for (size_t i = 0; i < f.size(); ++i) cumulative[i] = capped += std::min(f[i], cap);
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, total);
+  std::uniform_real_distribution<double> u(0.0, capped);
   std::vector<cl_uint2> picks(chains);
   for (cl_uint2& pick : picks) {
     size_t i = std::upper_bound(cumulative.begin(), cumulative.end(), u(rng)) - cumulative.begin();
@@ -102,8 +124,14 @@ MarkovChains::Sample MetropolisLoop::bootstrap(uint32_t seed, const Evaluate& ev
     pick = cl_uint2{{cl_uint(i % chains), cl_uint(i / chains)}};
   }
   chains_->start_at(seed, picks);
+  if (Stats* stats = in_.context.stats()) {
+    std::map<uint64_t, size_t> starts;  // the chains each picked bootstrap sample starts
+    size_t most = 0;
+    for (const cl_uint2& p : picks) most = std::max(most, ++starts[uint64_t(p.s[1]) * chains + p.s[0]]);
+    stats->set("mlt/start_duplicates", most);
+  }
   evaluate(uint32_t(bootstrap_rounds()), chains_->current(), current_, chains_->f_current(), chains_->current_read());
-  return {total, double(cumulative.size())};
+  return {total, double(f.size())};
 }
 
 void MetropolisLoop::splat(uint32_t seed, uint32_t step, size_t pending) {

@@ -32,6 +32,7 @@ struct MetropolisSettings {
   size_t chains = 0;  // 0: one a pixel, at most kDefaultChains (resolve with for_film)
   size_t bootstrap = 0;  // 0: four a chain, at least 65536 (resolve with for_film)
   std::optional<int> mutations_per_pixel;
+  size_t start_cap = 0;  // > 0: the chains' start weights capped at the bootstrap's k-th largest f
 };
 // Their names (a function: other integrators' parameter lists are built from it at start-up).
 std::vector<std::string> metropolis_params();
