@@ -8,6 +8,7 @@
 #include "camera/importance.h"
 #include "gradient/neighbours.h"
 #include "mlt/splats.h"
+#include "mlt/uniform_states.h"
 #include "path/camera_sample.h"
 #include "path/splat.h"
 #include "shared/color.h"

@@ -24,12 +24,10 @@ Metropolis::Metropolis(const RenderInputs& in, const MltIntegratorSettings& sett
       settings_{for_film(settings.loop, in.scene), settings.mis},
       subpaths_(in, BIDIR_BDPT, settings_.loop.chains),
       contribution_(subpaths_.kernels().make(kProgram, "mlt_contribution")),
-      uniform_states_(subpaths_.kernels().make(kProgram, "mlt_uniform_states")),
       image_sample_(subpaths_.kernels().make(kProgram, "mlt_image_sample")),
       values_(in.context, settings_.loop.chains),
       found_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, settings_.loop.chains),
       light_sums_(in.context, settings_.loop.chains),
-      sample_f_(in.context, settings_.loop.chains),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
       loop_(in, subpaths_.kernels(), kProgram, settings_.loop, {&film_["radiance"]}) {
   values_.fill(Vec4{});
@@ -43,32 +41,6 @@ void Metropolis::evaluate(const GdrPtParams& p, const Buffer<float>& states, Buf
   contribution_
       .args(in_.device_scene.camera(), p, options_, layout_, states, values_, found_.slots(), records, f)
       .run(layout_.chains);
-}
-
-MarkovChains::Sample Metropolis::image_luminance(const GdrPtParams& base, uint32_t seed) {
-  ScopedTimer timer(in_.context.stats(), "render/mlt_normalization");
-  const size_t chains = loop_.chains();
-  GdrBidirOptions all = options_;
-  all.multiplex = 0;
-  // Whole sweeps over the film's cells (mlt_uniform_states): at least `bootstrap` samples.
-  const size_t pixels = size_t(in_.scene.camera.width) * in_.scene.camera.height;
-  const size_t samples = (settings_.loop.bootstrap + pixels - 1) / pixels * pixels;
-  MarkovChains::Sample s;
-  for (size_t done = 0, round = 0; done < samples; done += chains, ++round) {
-    uniform_states_.args(in_.device_scene.camera(), layout_, seed, cl_uint(round), sample_states_).run(chains);
-    GdrPtParams p = base;
-    p.sample = 0x80000000u + uint32_t(round);  // apart from the chains' steps
-    subpaths_.trace(p, all, light_, PrimarySamples(sample_states_, layout_),
-                    BidirSink{values_, found_, nullptr, &light_sums_}, nullptr);
-    image_sample_.args(in_.device_scene.camera(), cl_uint(chains), values_, light_sums_, sample_f_).run(chains);
-    const std::vector<float> f = sample_f_.read();
-    const size_t used = std::min(chains, samples - done);  // the last round's past the sweeps are left out
-    for (size_t c = 0; c < used; ++c) s.sum += f[c];
-    s.count += double(used);
-  }
-  std::vector<float> pooled = {float(s.sum), float(s.count)};
-  cluster::sum_to_root(pooled, in_.context.stats());
-  return {pooled[0], pooled[1]};
 }
 
 RenderResult Metropolis::render(const RenderSettings& settings) {
@@ -90,11 +62,21 @@ RenderResult Metropolis::render(const RenderSettings& settings) {
   light_ = light_subpaths_allowed(settings.max_depth) && base.light_count > 0;
   const bool contributes = segments > 0 && base.light_count > 0;
   const size_t dims = size_t(4) * layout_.blocks;
-  if (sample_states_.size() != chains * dims) sample_states_ = Buffer<float>(in_.context, chains * dims);
-  // The samples' own numbers: apart from the chains' and on every rank.
+  // b from full bidirectional samples (every strategy, MIS-weighted), whose numbers are apart
+  // from the chains' and on every rank.
   const uint32_t sample_seed = (settings.seed ^ 0x62u) + 0x9E3779B9u * uint32_t(cluster::rank());
   ScopedTimer normalization_time(nullptr, "");  // a stopwatch: it counts against --time
-  const MarkovChains::Sample image = contributes ? image_luminance(base, sample_seed) : MarkovChains::Sample{};
+  GdrBidirOptions all = options_;
+  all.multiplex = 0;
+  auto luminance = [&](uint32_t iteration, const Buffer<float>& states, Buffer<float>& f) {
+    GdrPtParams p = base;
+    p.sample = iteration;
+    subpaths_.trace(p, all, light_, PrimarySamples(states, layout_), BidirSink{values_, found_, nullptr, &light_sums_},
+                    nullptr);
+    image_sample_.args(in_.device_scene.camera(), cl_uint(chains), values_, light_sums_, f).run(chains);
+  };
+  const MarkovChains::Sample image =
+      contributes ? loop_.stratified_integral(layout_, sample_seed, luminance) : MarkovChains::Sample{};
   RenderSettings loop = settings;
   if (loop.time_budget) loop.time_budget = std::max(0.0, *loop.time_budget - normalization_time.elapsed());
   MetropolisLoop::Result r = loop_.run(

@@ -57,20 +57,18 @@ class Metropolis : public Integrator {
   static constexpr const char* kProgram = "mlt/mlt.cl";
   // Traces the paths of `states` and writes each chain's contribution record and f.
   void evaluate(const GdrPtParams& p, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f);
-  // b from full bidirectional samples: the sum of their luminances and their count (all ranks').
-  MarkovChains::Sample image_luminance(const GdrPtParams& base, uint32_t seed);
+
 
   RenderInputs in_;
   MltIntegratorSettings settings_;
   BidirSubpaths subpaths_;
-  Kernel contribution_, uniform_states_, image_sample_;
+  Kernel contribution_, image_sample_;
   GdrBidirOptions options_{};
   GdrPrimaryLayout layout_{};
   bool light_ = false;  // light subpaths can take part
   Buffer<Vec4> values_;  // camera subpaths' contributions, a chain each
   SplatFilm found_;      // t = 1 contributions, a slot a chain (never gathered)
-  Buffer<Vec4> light_sums_;     // image_luminance: a path's t = 1 contributions
-  Buffer<float> sample_states_, sample_f_;  // image_luminance's states and luminances
+  Buffer<Vec4> light_sums_;  // b's samples: a path's t = 1 contributions
   Film film_;
   MetropolisLoop loop_;
   double normalization_ = 0;

@@ -70,13 +70,36 @@ MetropolisLoop::MetropolisLoop(const RenderInputs& in, const KernelFactory& kern
       settings_(settings),
       layers_(std::move(layers)),
       splat_(kernels.make(program, "mlt_splat")),
+      uniform_states_(kernels.make(program, "mlt_uniform_states")),
       current_(in.context, settings.chains * layers_.size()),
       proposed_(in.context, settings.chains * layers_.size()),
+      sample_f_(in.context, settings.chains),
       steps_per_gather_(std::max<size_t>(1, kSplatSlots / (2 * settings.chains))) {
   splats_.reserve(layers_.size());
   for (size_t r = 0; r < layers_.size(); ++r) {
     splats_.emplace_back(in.context, kernels, program, std::max(kSplatSlots, 2 * settings.chains));
   }
+}
+
+MarkovChains::Sample MetropolisLoop::stratified_integral(const GdrPrimaryLayout& layout, uint32_t seed,
+                                                        const Sample& sample) {
+  ScopedTimer timer(in_.context.stats(), "render/mlt_normalization");
+  const size_t chains = settings_.chains, dims = size_t(4) * layout.blocks;
+  if (sample_states_.size() != chains * dims) sample_states_ = Buffer<float>(in_.context, chains * dims);
+  const size_t pixels = size_t(in_.scene.camera.width) * in_.scene.camera.height;
+  const size_t samples = (settings_.bootstrap + pixels - 1) / pixels * pixels;
+  MarkovChains::Sample s;
+  for (size_t done = 0, round = 0; done < samples; done += chains, ++round) {
+    uniform_states_.args(in_.device_scene.camera(), layout, seed, cl_uint(round), sample_states_).run(chains);
+    sample(0x80000000u + uint32_t(round), sample_states_, sample_f_);  // keys apart from the chains' steps
+    const std::vector<float> f = sample_f_.read();
+    const size_t used = std::min(chains, samples - done);  // the last round's past the sweeps are left out
+    for (size_t c = 0; c < used; ++c) s.sum += f[c];
+    s.count += double(used);
+  }
+  std::vector<float> pooled = {float(s.sum), float(s.count)};
+  cluster::sum_to_root(pooled, in_.context.stats());
+  return {pooled[0], pooled[1]};
 }
 
 size_t MetropolisLoop::bootstrap_rounds() const {

@@ -11,7 +11,9 @@
 //   b          the target's integral, from every uniform sample of all ranks: the bootstrap's and
 //              the large steps'.
 // The film layers then hold sums whose image is b / (steps x chains) times them (Result::scale;
-// an integrator with a better estimate of b gives it there).
+// an integrator with a better estimate of b gives it there: stratified_integral estimates an
+// integral over film positions stratified by pixel, as mlt does for its image's luminance; for
+// gmlt's target it cost more time than it saved error).
 // Under MPI every rank runs chains of its own (their numbers keyed by its rank).
 #pragma once
 #include <functional>
@@ -49,9 +51,18 @@ class MetropolisLoop {
   // MltSettings::reported the leading dimensions each state read into `read`.
   using Evaluate = std::function<void(uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records,
                                       Buffer<float>& f, Buffer<cl_uint>& read)>;
+  // Writes into `f` a value at each of `states` (keyed by `iteration` as above).
+  using Sample = std::function<void(uint32_t iteration, const Buffer<float>& states, Buffer<float>& f)>;
 
-  // `program` holds the loop's kernels (mlt/chains.h, mlt/splats.h, path/splat.h); record r
-  // splats into layers[r] (a film layer of the camera's size).
+  // The integral of what `sample` returns over primary sample space in `layout`, apart from the
+  // chains: the mean over at least `bootstrap` fresh states, in whole sweeps over the film with
+  // one film position a pixel (stratified, kernels/mlt/uniform_states.h), so that the estimate
+  // carries no variation across the film, only that within each pixel. The sum and count of
+  // every rank's samples (a collective under MPI); `seed` keys the states (apart on every rank).
+  MarkovChains::Sample stratified_integral(const GdrPrimaryLayout& layout, uint32_t seed, const Sample& sample);
+
+  // `program` holds the loop's kernels (mlt/chains.h, mlt/splats.h, mlt/uniform_states.h,
+  // path/splat.h); record r splats into layers[r] (a film layer of the camera's size).
   MetropolisLoop(const RenderInputs& inputs, const KernelFactory& kernels, const std::string& program,
                  const MetropolisSettings& settings, std::vector<Buffer<Vec4>*> layers);
 
@@ -81,10 +92,11 @@ class MetropolisLoop {
   std::string program_;
   MetropolisSettings settings_;
   std::vector<Buffer<Vec4>*> layers_;
-  Kernel splat_;
+  Kernel splat_, uniform_states_;
   std::optional<MarkovChains> chains_;
   Buffer<GdrSplat> current_, proposed_;  // R records a chain
   std::vector<SplatFilm> splats_;        // record r's splats
+  Buffer<float> sample_states_, sample_f_;  // stratified_integral's
   size_t steps_per_gather_;
 };
 
