@@ -241,7 +241,8 @@ __kernel void bidir_splats_to_paths(uint count, __global GdrSplat* splats, __glo
 
 // The camera subpaths of bdpt, pm and vcm for pixels [first_pixel, first_pixel + pixel_count) (or
 // Metropolis chains: the film position is then a primary sample): the ray, the state and the MIS
-// sums of the camera vertex. Rays are counted in BIDIR_COUNTER_NEXT_RAYS.
+// sums of the camera vertex. Under multiplexing the rays are compacted and counted in
+// BIDIR_COUNTER_NEXT_RAYS; a pixel's ray keeps its pixel's slot.
 __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
                             __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths,
                             __global uint* counters, PRIMARY_SAMPLE_ARGS) {
@@ -263,10 +264,9 @@ __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params
   mis_camera_start(&cam, camera_cos_theta(&cam, r.d), opts.mis, &st);
   paths[i] = st;
   // A multiplexed path whose strategy connects a light vertex to the camera (t = 1) traces no
-  // camera subpath, and the others' rays are compacted; a pixel's ray keeps its pixel's slot.
+  // camera subpath.
   if (opts.multiplex && shown.y == 1) return;
-  uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
-  if (!opts.multiplex) k = i;
+  uint k = opts.multiplex ? atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]) : i;
   write_camera_ray(&rays[k], &r, i);
   queue[k] = i;
 }

@@ -88,10 +88,16 @@ __kernel void mlt_accept(GdrMltParams p, __global float* current, __global const
   atomic_inc(&counters[k.large ? MLT_COUNTER_LARGE_ACCEPTED : MLT_COUNTER_SMALL_ACCEPTED]);
 }
 
+// Writes into chain c of `states` every dimension of the large step that chain `from` took at
+// `iteration` under `seed`.
+inline void mlt_store_large_step(const GdrMltParams* p, __global float* states, uint c, uint seed, uint from,
+                                 uint iteration) {
+  for (uint d = 0; d < p->dims; d += 4) mlt_store_block(p, states, c, d, mlt_large_block(seed, from, iteration, d / 4));
+}
+
 // Chain c starts at the state that the large step of chain picks[c].x at iteration picks[c].y drew.
 __kernel void mlt_seed(GdrMltParams p, __global const uint2* picks, __global float* current) {
   uint c = get_global_id(0);
   if (c >= p.chains) return;
-  uint2 from = picks[c];
-  for (uint d = 0; d < p.dims; d += 4) mlt_store_block(&p, current, c, d, mlt_large_block(p.seed, from.x, from.y, d / 4));
+  mlt_store_large_step(&p, current, c, p.seed, picks[c].x, picks[c].y);
 }

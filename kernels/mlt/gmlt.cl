@@ -55,8 +55,7 @@ __kernel void gmlt_contribution(__global const GdrCamera* camera, GdrGptParams p
   GdrCamera cam = *camera;
   PathSampler ps = path_sampler_bound(params.path.seed, c, params.path.sample, states, layout);
   float2 x = camera_primary_raster(&cam, &ps);
-  float4 region = camera_sample_region(&cam);
-  float scale = region.z * region.w;
+  float scale = camera_sample_area(&cam);
   __global const float4* a = &acc[(size_t)c * GPT_ACC_COUNT];
   float3 base[GPT_OFFSETS], off[GPT_OFFSETS], delta[GPT_OFFSETS];
   float2 at[GPT_OFFSETS];

@@ -11,6 +11,14 @@
 #include "shared/color.h"
 #include "shared/pt_types.h"
 
+// A path's contribution scaled to the image's integral over primary sample space: what its camera
+// subpaths found at its film position (t >= 2) over the film positions' density, and what its
+// light vertices seen by the camera carry (t = 1) times the light subpaths a pixel would have
+// (bidir/subpath_mis.h: one a pixel). mlt_contribution and mlt_image_sample scale alike.
+inline float3 mlt_scaled(const GdrCamera* cam, float3 camera_part, float3 light_part) {
+  return camera_part * camera_sample_area(cam) + light_part * (float)(cam->width * cam->height);
+}
+
 // Chain c's contribution at the state `states` holds, once the bidirectional kernels traced it:
 // its strategy (t >= 2) added into values[c], at the film position its camera block gives, or
 // (t = 1) wrote its splat slot, where the light vertex projects. Scaled to the image's integral
@@ -29,11 +37,10 @@ __kernel void mlt_contribution(__global const GdrCamera* camera, GdrPtParams par
   float3 value;
   if (shown.y == 1) {
     raster = (float2)(found[c].raster[0], found[c].raster[1]);
-    value = found[c].valid ? vload3(0, found[c].value) * (float)(cam.width * cam.height) : (float3)(0.0f);
+    value = mlt_scaled(&cam, (float3)(0.0f), found[c].valid ? vload3(0, found[c].value) : (float3)(0.0f));
   } else {
-    float4 region = camera_sample_region(&cam);
     raster = camera_primary_raster(&cam, &ps);
-    value = values[c].xyz * (region.z * region.w);
+    value = mlt_scaled(&cam, values[c].xyz, (float3)(0.0f));
   }
   value *= bidir_selection_count(shown, params.max_depth);
   float y = gdr_luminance(value.x, value.y, value.z);
@@ -58,8 +65,7 @@ __kernel void mlt_image_sample(__global const GdrCamera* camera, uint chains, __
   uint c = get_global_id(0);
   if (c >= chains) return;
   GdrCamera cam = *camera;
-  float4 region = camera_sample_region(&cam);
-  float3 v = values[c].xyz * (region.z * region.w) + light[c].xyz * (float)(cam.width * cam.height);
+  float3 v = mlt_scaled(&cam, values[c].xyz, light[c].xyz);
   float y = gdr_luminance(v.x, v.y, v.z);
   f[c] = isfinite(y) ? y : 0.0f;
   values[c] = (float4)(0.0f);

@@ -17,7 +17,7 @@ __kernel void mlt_uniform_states(__global const GdrCamera* camera, GdrPrimaryLay
   GdrMltParams p;
   p.chains = layout.chains;
   p.dims = 4u * layout.blocks;
-  for (uint d = 0; d < p.dims; d += 4) mlt_store_block(&p, states, c, d, mlt_large_block(seed, c, iteration, d / 4));
+  mlt_store_large_step(&p, states, c, seed, c, iteration);
   uint w = (uint)camera->width, h = (uint)camera->height;
   uint cell = (uint)(((ulong)iteration * layout.chains + c) % ((ulong)w * h));
   size_t film = (size_t)(4u * primary_block_index(RNG_BLOCK_CAMERA, &layout)) * layout.chains + c;

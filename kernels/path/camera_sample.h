@@ -45,6 +45,13 @@ inline float4 camera_sample_region(const GdrCamera* cam) {
   return (float4)(-r, -r, (float)cam->width + 2.0f * r, (float)cam->height + 2.0f * r);
 }
 
+// The region's area in pixels: what turns a radiance at a film position drawn uniformly over it
+// into its share of the image's integral over primary sample space.
+inline float camera_sample_area(const GdrCamera* cam) {
+  float4 region = camera_sample_region(cam);
+  return region.z * region.w;
+}
+
 // A film position drawn uniformly over the region from the camera block: a Metropolis chain's
 // sample is not tied to a pixel, and its contribution is splatted where it lands.
 inline float2 camera_primary_raster(const GdrCamera* cam, const PathSampler* ps) {

@@ -136,7 +136,7 @@ void BidirSubpaths::trace_camera_subpaths(const GdrPtParams& p, const BidirSink&
       .args(in_.device_scene.camera(), p, o, queues_.rays[0], queues_.slots[0], camera_paths_, counters_.buffer(),
             primary_)
       .run(p.pixel_count);
-  cl_uint active = counters_.read()[BIDIR_COUNTER_NEXT_RAYS];
+  cl_uint active = o.multiplex ? counters_.read()[BIDIR_COUNTER_NEXT_RAYS] : p.pixel_count;
   for (int depth = 0, cur = 0; active > 0; ++depth, cur = 1 - cur) {
     intersect(in_.embree, queues_.rays[cur], active, depth == 0, depth == 0 ? "camera" : "bounce");
     if (depth == 0 && aux) aux->add(p, queues_.rays[cur], active, in_.device_scene);

@@ -1,7 +1,6 @@
 #include "integrators/gpt/gradient_groups.h"
 
-#include <algorithm>
-
+#include "render/wavefront/chunks.h"
 #include "util/log.h"
 
 namespace gdr {
@@ -34,8 +33,9 @@ bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt) {
   return gpt.shift == GPT_SHIFT_MANIFOLD && scene.features.specular_chains();
 }
 
-size_t GradientGroups::capacity_for(const RenderInputs& in, const GptSettings& gpt, size_t pixels) {
-  return std::min(gpt_manifold_enabled(in.scene, gpt) ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight, pixels);
+size_t GradientGroups::chunk_capacity_for(const RenderInputs& in, const GptSettings& gpt) {
+  return chunk_capacity(gpt_manifold_enabled(in.scene, gpt) ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight,
+                        in.scene.camera.width, in.scene.camera.height);
 }
 
 GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, size_t capacity, size_t indices)

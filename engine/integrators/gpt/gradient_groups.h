@@ -40,8 +40,9 @@ class GradientGroups {
   // Up to `capacity` groups a batch; `indices` path indices (acc holds GPT_ACC_COUNT a path).
   GradientGroups(const RenderInputs& inputs, const GptSettings& gpt, size_t capacity, size_t indices);
 
-  // Groups in flight for a film of `pixels` (fewer with the manifold shift: its walks' state).
-  static size_t capacity_for(const RenderInputs& inputs, const GptSettings& gpt, size_t pixels);
+  // Groups in flight for a chunk of the scene's film (fewer with the manifold shift: its walks'
+  // state).
+  static size_t chunk_capacity_for(const RenderInputs& inputs, const GptSettings& gpt);
 
   const KernelFactory& kernels() const { return kernels_; }
   size_t capacity() const { return capacity_; }

@@ -17,7 +17,7 @@ GptSettings gpt_settings(const IntegratorParams& params) {
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
     : in_(in),
       params_(params),
-      groups_(in, gpt, GradientGroups::capacity_for(in, gpt, size_t(in.scene.camera.width) * in.scene.camera.height),
+      groups_(in, gpt, GradientGroups::chunk_capacity_for(in, gpt),
               size_t(in.scene.camera.width) * in.scene.camera.height),
       gather_(groups_.kernels().make(GradientGroups::kProgram, "gpt_gather")),
       film_(in.context, in.scene.camera.width, in.scene.camera.height) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "cluster/ranks.h"
 #include "util/error.h"
 
 namespace gdr {
@@ -79,7 +78,7 @@ GradientImages GradientMetropolis::render_gradients(const RenderSettings& settin
   MltSettings mutation = settings_.loop.mutation;
   mutation.reported = true;
   MetropolisLoop::Result r = loop_.run(
-      settings, size_t(4) * layout.blocks, mutation, contributes,
+      settings, layout, mutation, contributes,
       [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f,
           Buffer<cl_uint>& read) {
         GdrGptParams p = base;
@@ -97,8 +96,7 @@ GradientImages GradientMetropolis::render_gradients(const RenderSettings& settin
   out.width = film_.width();
   out.height = film_.height();
   out.samples = r.passes;
-  const float scale = float(r.scale(r.normalization));
-  if (stats) stats->set("mlt/normalization", r.normalization);
+  const float scale = float(r.scale);
   out.dx = reduced_rgb(film_["dx"], scale, stats);
   out.dy = reduced_rgb(film_["dy"], scale, stats);
   out.direct = reduced_rgb(film_["direct"], scale, stats);

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "cluster/ranks.h"
-#include "cluster/reduce.h"
 #include "integrators/bidir/bidirectional.h"
 #include "util/log.h"
 
@@ -35,14 +33,6 @@ Metropolis::Metropolis(const RenderInputs& in, const MltIntegratorSettings& sett
   options_ = GdrBidirOptions{BIDIR_BDPT, settings.mis, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 1, 0};
 }
 
-void Metropolis::evaluate(const GdrPtParams& p, const Buffer<float>& states, Buffer<GdrSplat>& records,
-                          Buffer<float>& f) {
-  subpaths_.trace(p, options_, light_, PrimarySamples(states, layout_), BidirSink{values_, found_, nullptr}, nullptr);
-  contribution_
-      .args(in_.device_scene.camera(), p, options_, layout_, states, values_, found_.slots(), records, f)
-      .run(layout_.chains);
-}
-
 RenderResult Metropolis::render(const RenderSettings& settings) {
   Stats* stats = in_.context.stats();
   ScopedTimer timer(stats, "render/trace");
@@ -52,52 +42,44 @@ RenderResult Metropolis::render(const RenderSettings& settings) {
               " asked for more): the light-vertex store's bound");
   }
   const size_t chains = loop_.chains();
-  layout_ = PrimarySamples::layout_for(chains, std::max(segments, 1));
+  const GdrPrimaryLayout layout = PrimarySamples::layout_for(chains, std::max(segments, 1));
   MltSettings mutation = settings_.loop.mutation;
   mutation.lengths = unsigned(std::max(segments, 1));
   film_.clear();
 
   GdrPtParams base = in_.device_scene.path_params(settings, 0, 0, uint32_t(chains));
   base.max_depth = segments;
-  light_ = light_subpaths_allowed(settings.max_depth) && base.light_count > 0;
+  const bool light = light_subpaths_allowed(settings.max_depth) && base.light_count > 0;
   const bool contributes = segments > 0 && base.light_count > 0;
-  const size_t dims = size_t(4) * layout_.blocks;
-  // b from full bidirectional samples (every strategy, MIS-weighted), whose numbers are apart
-  // from the chains' and on every rank.
-  const uint32_t sample_seed = (settings.seed ^ 0x62u) + 0x9E3779B9u * uint32_t(cluster::rank());
-  ScopedTimer normalization_time(nullptr, "");  // a stopwatch: it counts against --time
+  // b, the image's luminance summed over its pixels, from full bidirectional samples (every
+  // strategy, MIS-weighted, their t = 1 contributions summed a path wherever they land).
   GdrBidirOptions all = options_;
   all.multiplex = 0;
   auto luminance = [&](uint32_t iteration, const Buffer<float>& states, Buffer<float>& f) {
     GdrPtParams p = base;
     p.sample = iteration;
-    subpaths_.trace(p, all, light_, PrimarySamples(states, layout_), BidirSink{values_, found_, nullptr, &light_sums_},
+    subpaths_.trace(p, all, light, PrimarySamples(states, layout), BidirSink{values_, found_, nullptr, &light_sums_},
                     nullptr);
     image_sample_.args(in_.device_scene.camera(), cl_uint(chains), values_, light_sums_, f).run(chains);
   };
-  const MarkovChains::Sample image =
-      contributes ? loop_.stratified_integral(layout_, sample_seed, luminance) : MarkovChains::Sample{};
-  RenderSettings loop = settings;
-  if (loop.time_budget) loop.time_budget = std::max(0.0, *loop.time_budget - normalization_time.elapsed());
-  MetropolisLoop::Result r = loop_.run(
-      loop, dims, mutation, contributes,
-      [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f,
-          Buffer<cl_uint>&) {
-        GdrPtParams p = base;
-        p.sample = iteration;
-        evaluate(p, states, records, f);
-      });
-  normalization_ = image.count > 0 ? image.sum / image.count : 0.0;
+  auto evaluate = [&](uint32_t iteration, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f,
+                      Buffer<cl_uint>&) {
+    GdrPtParams p = base;
+    p.sample = iteration;
+    subpaths_.trace(p, options_, light, PrimarySamples(states, layout), BidirSink{values_, found_, nullptr},
+                    nullptr);
+    contribution_
+        .args(in_.device_scene.camera(), p, options_, layout, states, values_, found_.slots(), records, f)
+        .run(chains);
+  };
+  MetropolisLoop::Result r = loop_.run(settings, layout, mutation, contributes, evaluate, luminance);
+  normalization_ = r.normalization;
   RenderResult result;
   result.samples = r.passes;
   result.seconds = timer.elapsed();
   result.image = Image(film_.width(), film_.height(), {});
-  result.image.add_rgb_layer("", reduced_rgb(film_["radiance"], float(r.scale(normalization_)), stats));
+  result.image.add_rgb_layer("", reduced_rgb(film_["radiance"], float(r.scale), stats));
   subpaths_.report(stats);
-  if (stats) {
-    stats->set("mlt/normalization", normalization_);
-    stats->set("mlt/normalization_samples", image.count);
-  }
   return result;
 }
 

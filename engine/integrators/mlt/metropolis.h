@@ -9,8 +9,9 @@
 // are the Metropolis loop's (metropolis_loop.h): a pass is about one mutation a pixel, so --spp
 // (or mutations_per_pixel) counts mutations a pixel. The normalization b, the integral of f, is
 // the image's luminance summed over its pixels: it is estimated apart, as Mitsuba's PSSMLT does,
-// from `bootstrap` full bidirectional samples (every strategy of every length, MIS-weighted, at
-// uniform film positions), whose luminance varies far less than a multiplexed path's f.
+// from `bootstrap` full bidirectional samples (every strategy of every length, MIS-weighted, their
+// film positions stratified by pixel: MetropolisLoop::run's normalization), whose luminance
+// varies far less than a multiplexed path's f.
 //
 // Parameters (IntegratorParams):
 //   chains               Markov chains run side by side, one work item each (default: one a
@@ -55,17 +56,12 @@ class Metropolis : public Integrator {
 
  private:
   static constexpr const char* kProgram = "mlt/mlt.cl";
-  // Traces the paths of `states` and writes each chain's contribution record and f.
-  void evaluate(const GdrPtParams& p, const Buffer<float>& states, Buffer<GdrSplat>& records, Buffer<float>& f);
-
 
   RenderInputs in_;
   MltIntegratorSettings settings_;
   BidirSubpaths subpaths_;
   Kernel contribution_, image_sample_;
   GdrBidirOptions options_{};
-  GdrPrimaryLayout layout_{};
-  bool light_ = false;  // light subpaths can take part
   Buffer<Vec4> values_;  // camera subpaths' contributions, a chain each
   SplatFilm found_;      // t = 1 contributions, a slot a chain (never gathered)
   Buffer<Vec4> light_sums_;  // b's samples: a path's t = 1 contributions

@@ -18,7 +18,6 @@ namespace {
 // batches gather slower on PoCL (2^18 slots a batch took 2 to 3 times as long a slot).
 constexpr size_t kSplatSlots = size_t(1) << 16;
 
-
 size_t whole_param(const IntegratorParams& params, const std::string& name, size_t fallback, size_t lowest) {
   if (!params.has(name)) return fallback;
   float v = params.non_negative(name, float(fallback));
@@ -174,22 +173,27 @@ void MetropolisLoop::gather(size_t pending) {
   }
 }
 
-MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_t dims, const MltSettings& mutation,
-                                           bool contributes, const Evaluate& evaluate) {
+MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, const GdrPrimaryLayout& layout,
+                                           const MltSettings& mutation, bool contributes, const Evaluate& evaluate,
+                                           const Sample& normalization) {
   Stats* stats = in_.context.stats();
   const size_t chains = settings_.chains;
   const size_t pixels = size_t(in_.scene.camera.width) * in_.scene.camera.height;
-  chains_.emplace(in_.context, kernels_, program_, chains, dims, mutation);
+  chains_.emplace(in_.context, kernels_, program_, chains, size_t(4) * layout.blocks, mutation);
   const uint32_t seed = chain_seed(settings.seed, cluster::rank());
-  ScopedTimer bootstrap_time(nullptr, "");  // a stopwatch
+  ScopedTimer start_time(nullptr, "");  // a stopwatch: the bootstrap and b's samples count against --time
   const MarkovChains::Sample boot = contributes ? bootstrap(seed, evaluate) : MarkovChains::Sample{};
+  // b's samples draw numbers apart from the chains' (another Philox key).
+  const MarkovChains::Sample given = contributes && normalization
+                                         ? stratified_integral(layout, seed ^ 0x62616d70u, normalization)
+                                         : MarkovChains::Sample{};
 
   // A pass: the steps that make about one mutation a pixel.
   const size_t steps_per_pass = std::max<size_t>(1, (pixels + chains / 2) / chains);
   const uint32_t first_step = uint32_t(bootstrap_rounds()) + 1;
   RenderSettings loop = settings;
   if (settings_.mutations_per_pixel) loop.spp = *settings_.mutations_per_pixel;
-  if (loop.time_budget) loop.time_budget = std::max(0.0, *loop.time_budget - bootstrap_time.elapsed());
+  if (loop.time_budget) loop.time_budget = std::max(0.0, *loop.time_budget - start_time.elapsed());
   Result result;
   size_t pending = 0;  // steps whose splats wait in the slots
   result.passes = run_progressive(loop, [&](int sample) {
@@ -214,22 +218,25 @@ MetropolisLoop::Result MetropolisLoop::run(const RenderSettings& settings, size_
   const MarkovChains::Sample large = chains_->large_step_targets();
   std::vector<float> uniform = {float(boot.sum + large.sum), float(boot.count + large.count)};
   cluster::sum_to_root(uniform, stats);
-  result.normalization = uniform[1] > 0 ? double(uniform[0]) / uniform[1] : 0.0;
-  result.steps = double(result.passes) * double(steps_per_pass);
-  result.chains = chains;
+  const double target_integral = uniform[1] > 0 ? double(uniform[0]) / uniform[1] : 0.0;
+  const MarkovChains::Sample b = normalization ? given : MarkovChains::Sample{uniform[0], uniform[1]};
+  result.normalization = b.count > 0 ? b.sum / b.count : 0.0;
+  const double steps = double(result.passes) * double(steps_per_pass);
+  result.scale = steps > 0 ? result.normalization / (steps * double(chains)) : 0.0;
+  // The chains were made for this render: their counts are this render's.
+  const std::vector<cl_uint> n = chains_->counts();
+  chains_->report(stats);
   if (stats) {
-    // This render's acceptance by mutation kind (the counters add up over renders on one stats).
-    const char* const kinds[] = {"mlt/small_steps", "mlt/small_steps_accepted", "mlt/large_steps",
-                                 "mlt/large_steps_accepted"};
-    std::vector<uint64_t> before;
-    for (const char* k : kinds) before.push_back(stats->count(k));
-    chains_->report(stats);
-    auto grew = [&](int i) { return double(stats->count(kinds[i]) - before[i]); };
-    stats->set("mlt/acceptance/small_steps", grew(0) > 0 ? grew(1) / grew(0) : 0.0);
-    stats->set("mlt/acceptance/large_steps", grew(2) > 0 ? grew(3) / grew(2) : 0.0);
+    auto rate = [&](int accepted, int steps_of_kind) {
+      return n[steps_of_kind] > 0 ? double(n[accepted]) / n[steps_of_kind] : 0.0;
+    };
+    stats->set("mlt/acceptance/small_steps", rate(MLT_COUNTER_SMALL_ACCEPTED, MLT_COUNTER_SMALL_STEPS));
+    stats->set("mlt/acceptance/large_steps", rate(MLT_COUNTER_LARGE_ACCEPTED, MLT_COUNTER_LARGE_STEPS));
     stats->set("mlt/chains", chains);
-    stats->set("mlt/mutations_per_pixel", result.steps * double(chains) / double(pixels));
-    stats->set("mlt/target_integral", result.normalization);
+    stats->set("mlt/mutations_per_pixel", steps * double(chains) / double(pixels));
+    stats->set("mlt/normalization", result.normalization);
+    stats->set("mlt/normalization_samples", b.count);
+    stats->set("mlt/target_integral", target_integral);
     stats->set("mlt/target_integral_samples", double(uniform[1]));
     stats->add_count("mlt/bootstrap_samples", uint64_t(boot.count));
     stats->set("render/spp", result.passes);

@@ -9,12 +9,12 @@
 //              accept, then splat every record of the current state with weight 1 - a and of the
 //              proposal with weight a (kernels/mlt/splats.h) into record r's film layer;
 //   b          the target's integral, from every uniform sample of all ranks: the bootstrap's and
-//              the large steps'.
-// The film layers then hold sums whose image is b / (steps x chains) times them (Result::scale;
-// an integrator with a better estimate of b gives it there: stratified_integral estimates an
-// integral over film positions stratified by pixel, as mlt does for its image's luminance; for
-// gmlt's target it cost more time than it saved error).
-// Under MPI every rank runs chains of its own (their numbers keyed by its rank).
+//              the large steps'; or, where the integrator gives a function whose integral is b,
+//              the mean of that function over at least `bootstrap` fresh states stratified by
+//              pixel (mlt: the image's luminance from full bidirectional samples; for gmlt's
+//              target that cost more time than it saved error). Its time counts against --time.
+// The film layers then hold sums whose image is b / (steps x chains) times them (Result::scale).
+// Under MPI every rank runs chains (and samples) of its own, their numbers keyed by its rank.
 #pragma once
 #include <functional>
 #include <optional>
@@ -54,35 +54,32 @@ class MetropolisLoop {
   // Writes into `f` a value at each of `states` (keyed by `iteration` as above).
   using Sample = std::function<void(uint32_t iteration, const Buffer<float>& states, Buffer<float>& f)>;
 
-  // The integral of what `sample` returns over primary sample space in `layout`, apart from the
-  // chains: the mean over at least `bootstrap` fresh states, in whole sweeps over the film with
-  // one film position a pixel (stratified, kernels/mlt/uniform_states.h), so that the estimate
-  // carries no variation across the film, only that within each pixel. The sum and count of
-  // every rank's samples (a collective under MPI); `seed` keys the states (apart on every rank).
-  MarkovChains::Sample stratified_integral(const GdrPrimaryLayout& layout, uint32_t seed, const Sample& sample);
-
   // `program` holds the loop's kernels (mlt/chains.h, mlt/splats.h, mlt/uniform_states.h,
   // path/splat.h); record r splats into layers[r] (a film layer of the camera's size).
   MetropolisLoop(const RenderInputs& inputs, const KernelFactory& kernels, const std::string& program,
                  const MetropolisSettings& settings, std::vector<Buffer<Vec4>*> layers);
 
   struct Result {
-    int passes = 0;             // of all ranks
-    double normalization = 0;   // b
-    double steps = 0;           // chain steps of all ranks, over the chains
-    size_t chains = 0;
-    // What turns the layers' sums into the image: b / (steps x chains).
-    double scale(double b) const { return steps > 0 ? b / (steps * double(chains)) : 0.0; }
+    int passes = 0;            // of all ranks
+    double normalization = 0;  // b
+    double scale = 0;          // what turns the layers' sums into the image: b / (steps x chains)
   };
-  // The chains hold states of `dims` dimensions (`mutation.lengths` as MltSettings say); the
-  // bootstrap runs when `contributes` (else the layers stay black).
-  Result run(const RenderSettings& settings, size_t dims, const MltSettings& mutation, bool contributes,
-             const Evaluate& evaluate);
+  // The chains hold states in `layout` (`mutation.lengths` and `reported` as MltSettings say);
+  // nothing runs unless `contributes` (the layers stay black). `normalization`: a function whose
+  // integral is b (else b is the target's integral from the chains' uniform samples).
+  Result run(const RenderSettings& settings, const GdrPrimaryLayout& layout, const MltSettings& mutation,
+             bool contributes, const Evaluate& evaluate, const Sample& normalization = nullptr);
 
   size_t chains() const { return settings_.chains; }
 
  private:
   MarkovChains::Sample bootstrap(uint32_t seed, const Evaluate& evaluate);
+  // The integral of what `sample` returns over primary sample space in `layout`: the mean over at
+  // least `bootstrap` fresh states, in whole sweeps over the film with one film position a pixel
+  // (stratified, kernels/mlt/uniform_states.h), so that the estimate carries no variation across
+  // the film, only that within each pixel. The sum and count of every rank's samples (a
+  // collective under MPI).
+  MarkovChains::Sample stratified_integral(const GdrPrimaryLayout& layout, uint32_t seed, const Sample& sample);
   size_t bootstrap_rounds() const;
   void splat(uint32_t seed, uint32_t step, size_t pending);
   void gather(size_t pending);
