@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "integrators/bidir/bidirectional.h"
+#include "integrators/gbidir/gradient_bidirectional.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "integrators/mlt/gradient_metropolis.h"
 #include "integrators/mlt/metropolis.h"
@@ -29,6 +30,12 @@ std::vector<IntegratorEntry> make_registry() {
        true, join(kGptParams, kReconParams), {"gpt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<GradientPathTracer>(in, gpt_settings(p), p);
+       }},
+      {"gbdpt", "gradient-domain bidirectional path tracing (Manzi et al. 2015): G-PT's shifted camera subpaths "
+                "connected to one light subpath each, Poisson reconstruction",
+       true, join(kGbdptParams, kReconParams), {"gbdpt"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<GradientBidirectional>(in, gbdpt_settings(p), p);
        }},
       {"lt", "light tracer: light subpaths connected to the camera and splatted, emission seen directly by camera rays",
        false, kLtParams, {"ptracer", "lt"},

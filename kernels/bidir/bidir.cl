@@ -28,6 +28,7 @@
 #include "path/spawn.h"
 #include "path/nee.h"
 #include "path/splat.h"
+#include "bidir/connection.h"
 #include "bidir/hash_grid.h"
 #include "bidir/strategies.h"
 #include "bidir/subpath_mis.h"
@@ -193,7 +194,8 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   // Connection to the camera: beta f (cos / d^2) cos_theta We, spread by the pixels' filters.
   GdrCamera cam = *camera;
   CameraProjection pr;
-  if ((connects || opts.technique == BIDIR_LT) && segments_allowed(params.max_depth, k + 1) && !delta &&
+  if ((connects || opts.technique == BIDIR_LT) && !opts.no_camera_connections &&
+      segments_allowed(params.max_depth, k + 1) && !delta &&
       bidir_strategy_shown(&st, k + 1, 1) && camera_project(&cam, su.p, &pr)) {
     float3 wc = -pr.dir, wc_local = frame_to_local(&frame, wc);
     float3 f = bsdf_eval_transport(&b, wo_local, wc_local, TRANSPORT_IMPORTANCE) *
@@ -272,12 +274,12 @@ __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params
 }
 
 // The weight of emission a camera subpath found (s = 0): 1 seen directly (no other strategy
-// reaches the pinhole), else against the light point's direct and emission pdfs. pm sees
+// reaches the pinhole), else against the other strategies' share (`others`, from the light
+// point's direct and emission pdfs). pm sees
 // emission only through delta scatterings (its merges find the rest).
-inline float bdpt_emission_weight(const GdrBidirOptions* o, const GdrBidirPathState* st, float direct,
-                                  float emission) {
+inline float bdpt_emission_weight(const GdrBidirOptions* o, const GdrBidirPathState* st, float others) {
   if (o->technique == BIDIR_PM) return (st->flags & BIDIR_PATH_ALL_SPECULAR) ? 1.0f : 0.0f;
-  return st->depth == 0 ? 1.0f : bidir_weight(o, mis_emission_weight(direct, emission, st, o->mis));
+  return st->depth == 0 ? 1.0f : bidir_weight(o, mis_weight(others));
 }
 
 // A camera subpath's new vertex: what it sees emitting (s = 0), its connection to a light point
@@ -306,9 +308,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   if (rh.hit.geomID == GDR_INVALID_ID) {
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
     if (s.env_light >= 0 && bidir_strategy_shown(&st, 0, t + 1)) {
-      float direct = escaped_light_pdf(&s, dir);
-      float emission = direct * light_emission_over_direct(&s, s.env_light, (float3)(0.0f), -dir);
-      float w = bdpt_emission_weight(&opts, &st, direct, emission);
+      float w = bdpt_emission_weight(&opts, &st, mis_escaped_emission_others(&s, dir, st.dvcm, st.dvc, opts.mis));
       film_add(film, st.index, beta * escaped_radiance(&s, dir) * w, nonfinite);
     }
 #endif
@@ -322,9 +322,8 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   if (su.light >= 0 && bidir_strategy_shown(&st, 0, t + 1)) {
     float3 le = surface_radiance(&s, &su, wo);
     if (max3(le) > 0.0f) {
-      float direct = light_pmf(&s, su.light) * light_emission_pdf_pos(&s, su.light, su.area);
-      float emission = direct * light_emission_over_direct(&s, su.light, su.ng, wo);
-      film_add(film, st.index, beta * le * bdpt_emission_weight(&opts, &st, direct, emission), nonfinite);
+      float others = mis_surface_emission_others(&s, &su, wo, st.dvcm, st.dvc, opts.mis);
+      film_add(film, st.index, beta * le * bdpt_emission_weight(&opts, &st, others), nonfinite);
     }
   }
 #endif
@@ -343,13 +342,8 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   int connects = bidir_connects(&opts), merges = bidir_merges(&opts);
   if (connects && bidir_strategy_shown(&st, 1, t + 1) && nee_applies(&s, &b) &&
       nee_sample(&s, &ps, st.depth, &su, &frame, &light, &ls, &wi_local)) {
-    float pdf_fwd = bsdf_pdf(&b, wo_local, wi_local), pdf_rev = bsdf_pdf(&b, wi_local, wo_local);
-    float cos_z = fabs(dot(su.ng, ls.wi));
-    float w_light = ls.delta ? 0.0f : mis_power_of(pdf_fwd / ls.pdf, opts.mis);
-    float pdf_emit = light_emission_over_direct(&s, light, ls.light_normal, -ls.wi) * cos_z;
-    if (!light_is_infinite(&s, light)) pdf_emit /= ls.dist * ls.dist;
-    float w_camera = mis_side(pdf_emit, st.dvcm, st.dvc, pdf_rev, &opts);
-    float w = bidir_weight(&opts, mis_weight(w_light + w_camera));
+    float others = mis_light_point_others(&s, &b, wo_local, wi_local, su.ng, light, &ls, st.dvcm, st.dvc, &opts);
+    float w = bidir_weight(&opts, mis_weight(others));
     float3 c = beta * bsdf_eval(&b, wo_local, wi_local) * ls.radiance * (w / ls.pdf);
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
       uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
@@ -401,38 +395,14 @@ __kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count,
       !bidir_strategy_shown(&light, y.depth + 1, z.depth + 1)) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   atomic_inc(&counters[BIDIR_COUNTER_CONNECTIONS]);
-  Surface sz = surface_at(&s, z.prim, z.u, z.v), sy = surface_at(&s, y.prim, y.u, y.v);
-  float3 d = sy.p - sz.p;
-  float dist2 = dot(d, d);
-  if (!(dist2 > 0.0f)) return;
-  float dist = sqrt(dist2);
-  float3 dir = d / dist;  // from the camera vertex toward the light vertex
-
-  // The camera vertex in radiance transport, with the side check of its light-side direction;
-  // the light vertex in importance transport, with the shading-normal correction (as lt's
-  // camera connection: bidir_light_shade).
-  Bsdf bz = surface_bsdf(&s, &sz), by = surface_bsdf(&s, &sy);
-  Frame fz = frame_from_normal(sz.ns), fy = frame_from_normal(sy.ns);
-  float3 wo_z = vload3(0, z.wo), wo_y = vload3(0, y.wo);
-  float3 wo_z_local = frame_to_local(&fz, wo_z), dir_z_local = frame_to_local(&fz, dir);
-  float3 wo_y_local = frame_to_local(&fy, wo_y), dir_y_local = frame_to_local(&fy, -dir);
-  if (!sides_agree(dir, sz.ng, dir_z_local.z)) return;
-  float3 f_z = bsdf_eval(&bz, wo_z_local, dir_z_local);
-  float3 f_y = bsdf_eval_transport(&by, wo_y_local, dir_y_local, TRANSPORT_IMPORTANCE) *
-               shading_normal_correction(wo_y, -dir, sy.ng, wo_y_local.z, dir_y_local.z);
-  float3 c = vload3(0, z.throughput) * f_z * f_y * vload3(0, y.throughput) / dist2;
+  BidirConnection cn;
+  if (!bidir_connection(&s, &z, &y, &opts, &cn)) return;
+  float3 c = cn.value;
   if (!(max3(c) > 0.0f)) return;
-
-  // Each side's vertex as the other side's BSDF would have drawn it (area pdfs).
-  float pdf_z_fwd = bsdf_pdf(&bz, wo_z_local, dir_z_local), pdf_z_rev = bsdf_pdf(&bz, dir_z_local, wo_z_local);
-  float pdf_y_fwd = bsdf_pdf(&by, wo_y_local, dir_y_local), pdf_y_rev = bsdf_pdf(&by, dir_y_local, wo_y_local);
-  float w_light = mis_side(pdf_z_fwd * fabs(dot(sy.ng, dir)) / dist2, y.dvcm, y.dvc, pdf_y_rev, &opts);
-  float w_camera = mis_side(pdf_y_fwd * fabs(dot(sz.ng, dir)) / dist2, z.dvcm, z.dvc, pdf_z_rev, &opts);
-  c *= bidir_weight(&opts, mis_weight(w_light + w_camera));
+  c *= bidir_weight(&opts, mis_weight(cn.others));
   if (!(max3(c) > 0.0f) || !finite_or_count(c, &counters[BIDIR_COUNTER_NONFINITE])) return;
   uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
-  float3 to = leaving_origin(sy.p, sy.ng, -dir);
-  write_segment_ray(&shadow_rays[k], sz.p, sz.ng, to, params.first_pixel + slot);
+  write_segment_ray(&shadow_rays[k], cn.from, cn.from_ng, cn.to, params.first_pixel + slot);
   shadow_values[k] = (float4)(c, 0.0f);
 }
 

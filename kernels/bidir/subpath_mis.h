@@ -21,6 +21,8 @@
 #include "bsdf/bsdf.h"
 #include "camera/importance.h"
 #include "light/emission.h"
+#include "path/emission.h"
+#include "path/scene.h"
 #include "path/mis.h"
 #include "shared/bidir_types.h"
 
@@ -46,34 +48,49 @@ inline void mis_camera_start(const GdrCamera* cam, float cos_theta, int mis, Gdr
   st->flags = BIDIR_PATH_ALL_SPECULAR;
 }
 
+// The running sums of a subpath reached their next vertex at distance dist, arriving at cos_in to
+// the geometric normal (has_length 0: the first segment from a light at infinity). The camera
+// paths of the gradient integrators carry the sums beside their own state and call these forms.
+inline void mis_sums_arrive(float dist, float cos_in, int has_length, int mis, float* dvcm, float* dvc, float* dvm) {
+  if (has_length) *dvcm *= mis_power_of(dist * dist, mis);
+  float c = mis_power_of(cos_in, mis);
+  *dvcm /= c;
+  *dvc /= c;
+  *dvm /= c;
+}
+
 // The subpath reached its next vertex at distance dist, arriving at cos_in to the geometric
 // normal (a light subpath's first segment from a light at infinity has no length).
 inline void mis_arrive(float dist, float cos_in, int mis, GdrBidirPathState* st) {
   int no_length = st->depth == 0 && (st->flags & BIDIR_PATH_INFINITE);
-  if (!no_length) st->dvcm *= mis_power_of(dist * dist, mis);
-  float c = mis_power_of(cos_in, mis);
-  st->dvcm /= c;
-  st->dvc /= c;
-  st->dvm /= c;
+  mis_sums_arrive(dist, cos_in, !no_length, mis, &st->dvcm, &st->dvc, &st->dvm);
+}
+
+// The sums scattered in a direction of pdf `pdf` (delta: a delta lobe), leaving at cos_out to the
+// geometric normal; pdf_rev: the BSDF's pdf of the way back (the sampled direction to the incoming
+// one). A delta lobe cannot be connected to: the sums skip the vertex (its forward and reverse
+// lobe choices alike).
+inline void mis_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, const GdrBidirOptions* o,
+                             float* dvcm, float* dvc, float* dvm) {
+  int mis = o->mis;
+  if (delta) {
+    *dvcm = 0.0f;
+    *dvc *= mis_power_of(cos_out, mis);
+    *dvm *= mis_power_of(cos_out, mis);
+    return;
+  }
+  float g = mis_power_of(cos_out / pdf, mis), rev = mis_power_of(pdf_rev, mis);
+  *dvc = g * (*dvc * rev + *dvcm + o->vm_factor);
+  *dvm = g * (*dvm * rev + *dvcm * o->vc_factor + 1.0f);
+  *dvcm = mis_power_of(1.0f / pdf, mis);
 }
 
 // The subpath scattered by BSDF sample bs, leaving at cos_out to the geometric normal; pdf_rev:
-// the BSDF's pdf of the way back (the sampled direction to the incoming one). A delta lobe
-// cannot be connected to: the sums skip the vertex (its forward and reverse lobe choices alike).
+// the BSDF's pdf of the way back.
 inline void mis_scatter(const BsdfSample* bs, float pdf_rev, float cos_out, const GdrBidirOptions* o,
                         GdrBidirPathState* st) {
-  int mis = o->mis;
-  if (bs->delta) {
-    st->dvcm = 0.0f;
-    st->dvc *= mis_power_of(cos_out, mis);
-    st->dvm *= mis_power_of(cos_out, mis);
-    return;
-  }
-  st->flags &= ~BIDIR_PATH_ALL_SPECULAR;
-  float g = mis_power_of(cos_out / bs->pdf, mis), rev = mis_power_of(pdf_rev, mis);
-  st->dvc = g * (st->dvc * rev + st->dvcm + o->vm_factor);
-  st->dvm = g * (st->dvm * rev + st->dvcm * o->vc_factor + 1.0f);
-  st->dvcm = mis_power_of(1.0f / bs->pdf, mis);
+  if (!bs->delta) st->flags &= ~BIDIR_PATH_ALL_SPECULAR;
+  mis_sums_scatter(bs->delta, bs->pdf, pdf_rev, cos_out, o, &st->dvcm, &st->dvc, &st->dvm);
 }
 
 // What the sums say of the strategies on one side of a connection: the pdf with which the other
@@ -96,10 +113,47 @@ inline float mis_weight(float others) {
   return isfinite(others) && w > 0.0f ? w : 0.0f;
 }
 
-// The camera subpath (depth >= 1 scatterings) found emission whose light point has direct pdf
-// `direct` and emission pdf `emission` toward the subpath.
+// The camera subpath (depth >= 1 scatterings, sums dvcm and dvc) found emission whose light point
+// has direct pdf `direct` and emission pdf `emission` toward the subpath: the other strategies'
+// share, relative to this one's.
+inline float mis_emission_others(float direct, float emission, float dvcm, float dvc, int mis) {
+  return mis_power_of(direct, mis) * dvcm + mis_power_of(emission, mis) * dvc;
+}
 inline float mis_emission_weight(float direct, float emission, const GdrBidirPathState* st, int mis) {
-  return mis_weight(mis_power_of(direct, mis) * st->dvcm + mis_power_of(emission, mis) * st->dvc);
+  return mis_weight(mis_emission_others(direct, emission, st->dvcm, st->dvc, mis));
+}
+
+// The emission pdfs of a camera subpath's vertex su, seen along wo (toward the subpath), as the
+// light-point (s = 1) and light-subpath (s >= 2) strategies would draw it: the other strategies'
+// share for the sums dvcm, dvc.
+inline float mis_surface_emission_others(const SceneData* s, const Surface* su, float3 wo, float dvcm, float dvc,
+                                         int mis) {
+  if (su->light < 0) return 0.0f;
+  float direct = light_pmf(s, su->light) * light_emission_pdf_pos(s, su->light, su->area);
+  float emission = direct * light_emission_over_direct(s, su->light, su->ng, wo);
+  return mis_emission_others(direct, emission, dvcm, dvc, mis);
+}
+
+// The same for a camera subpath that escaped along dir into the environment.
+inline float mis_escaped_emission_others(const SceneData* s, float3 dir, float dvcm, float dvc, int mis) {
+  if (s->env_light < 0) return 0.0f;
+  float direct = escaped_light_pdf(s, dir);
+  float emission = direct * light_emission_over_direct(s, s->env_light, (float3)(0.0f), -dir);
+  return mis_emission_others(direct, emission, dvcm, dvc, mis);
+}
+
+// A camera vertex (surface normal ng, BSDF b, local directions wo_l toward its subpath and wi_l
+// toward the light point of sample ls from light `light`) connected to that light point (s = 1):
+// the other strategies' share, from the camera subpath's sums dvcm and dvc.
+inline float mis_light_point_others(const SceneData* s, const Bsdf* b, float3 wo_l, float3 wi_l, float3 ng, int light,
+                                    const LightSample* ls, float dvcm, float dvc, const GdrBidirOptions* o) {
+  float pdf_fwd = bsdf_pdf(b, wo_l, wi_l), pdf_rev = bsdf_pdf(b, wi_l, wo_l);
+  float cos_z = fabs(dot(ng, ls->wi));
+  float w_light = ls->delta ? 0.0f : mis_power_of(pdf_fwd / ls->pdf, o->mis);
+  float pdf_emit = light_emission_over_direct(s, light, ls->light_normal, -ls->wi) * cos_z;
+  if (!light_is_infinite(s, light)) pdf_emit /= ls->dist * ls->dist;
+  float w_camera = mis_side(pdf_emit, dvcm, dvc, pdf_rev, o);
+  return w_light + w_camera;
 }
 
 // The techniques a render combines: connections (bdpt, vcm; lt's camera connections are its

@@ -31,6 +31,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   GptBaseState b;
   b.path = path_start(pixel, params.path.sample);
   b.rr_prob = 1.0f;
+  b.dvcm = b.dvc = 0.0f;  // G-BDPT: no share for light tracing (gbidir/weights.h)
   bases[g] = b;
 #if defined(GDR_MANIFOLD)
   chains[g].open = 0;
@@ -45,6 +46,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     os.last_delta = 0;
     os.visible = 0;
     os.glossy_next_only = 0;  // the pixel shift holds wherever the offset lands
+    os.dvcm = os.dvc = 0.0f;
     int nx = px + OFFSET_PIXEL_DX(k), ny = py + OFFSET_PIXEL_DY(k);
     // The pixel shift keeps the film offset: its Jacobian is 1, and the two pixels' film
     // densities differ only near the image's edges, where the filter is cut (camera_shift_ratio).

@@ -1,5 +1,8 @@
 // G-PT shade step: emission and next-event estimation of the base and its offsets with the
 // pairwise MIS weights, then the base's BSDF sample (offsets that share its vertex follow).
+// Built for G-BDPT (GDR_GBDPT), the same step weighs by G-BDPT's MIS (gbidir/weights.h), carries
+// the paths' bidirectional sums and records each rough vertex for the connections to the light
+// subpath (gbidir/connect.h).
 #pragma once
 #include "gradient/accumulators.h"
 #include "gradient/offsets.h"
@@ -10,8 +13,13 @@
 #include "path/scene.h"
 #include "path/shadow.h"
 #include "path/spawn.h"
+#include "shared/gbidir_types.h"
 #include "shift/joined.h"
 #include "shift/policy.h"
+#if defined(GDR_GBDPT)
+#include "gbidir/camera_vertex.h"
+#include "gbidir/weights.h"
+#endif
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
 // and the offset's le_off (with q_off, the offset's own light-sampling pdf for that emitter),
@@ -28,10 +36,19 @@ inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const Gpt
   acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(c_off, nonfinite));
 }
 
+// The pair (base, offset k) of one strategy under one weight w (G-BDPT's MIS): the base's c_base
+// and the offset's c_off (f(y) |J| / p(x)).
+inline void add_pair(__global float4* acc, uint pixel, int k, float w, float3 c_base, float3 c_off,
+                     __global uint* nonfinite) {
+  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w * c_base, nonfinite));
+  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w * c_off, nonfinite));
+}
+
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
                         __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
                         __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
-                        __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
+                        __global GbdptCameraVertex* records, __global uint* connectable, __global uint* counters,
+                        PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q >= count || path_no_segments(params.path.max_depth)) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -69,13 +86,24 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       if (direct) {
         acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
       } else {
+#if defined(GDR_GBDPT)
+        float others_x = mis_escaped_emission_others(&s, dir, base.dvcm, base.dvc, BIDIR_MIS_BALANCE);
+#else
         float p_light = last_specular ? 0.0f : escaped_light_pdf(&s, dir);
+#endif
         for (int k = 0; k < GPT_OFFSETS; ++k) {
           // A traced offset escaped along its own direction; a joined one along the base's.
           float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
+#if defined(GDR_GBDPT)
+          int alive = offset_alive(&o[k]);
+          float others_y = alive ? mis_escaped_emission_others(&s, d_off, o[k].dvcm, o[k].dvc, BIDIR_MIS_BALANCE) : 0.0f;
+          float3 c_off = alive ? vload3(0, o[k].throughput) * escaped_radiance(&s, d_off) : (float3)(0.0f);
+          add_pair(acc, st->pixel, k, gbdpt_weight(others_x, others_y, o[k].ratio, alive), beta * le, c_off, nonfinite);
+#else
           float q_off = o[k].last_delta ? 0.0f : escaped_light_pdf(&s, d_off);
           add_bsdf_emission(acc, st->pixel, k, &o[k], p_bsdf, p_light, beta * le, escaped_radiance(&s, d_off), q_off,
                             nonfinite);
+#endif
         }
       }
     }
@@ -88,12 +116,15 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   float3 wo = -dir;
   Surface so[GPT_OFFSETS];   // the offsets' current vertices
   float3 wo_off[GPT_OFFSETS];  // and their directions toward their previous vertices (world)
+  float dist_off[GPT_OFFSETS]; // and their distances from them
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     so[k] = su;
     wo_off[k] = wo;
+    dist_off[k] = rh.ray.tfar;
     if (o[k].mode == GPT_MODE_TRACE) {
       so[k] = surface_at(&s, o[k].prim, o[k].b1, o[k].b2);
       wo_off[k] = -vload3(0, o[k].dir);
+      dist_off[k] = o[k].t;
       if (o[k].glossy_next_only) {
         Bsdf bo = surface_bsdf(&s, &so[k]);
         if (!shift_reverses_at(&bo, params.shift_threshold)) {
@@ -102,8 +133,16 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       }
     } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
       wo_off[k] = normalize_or(vload3(0, o[k].prev_pos) - su.p, wo);
+      dist_off[k] = length(vload3(0, o[k].prev_pos) - su.p);
     }
   }
+#if defined(GDR_GBDPT)
+  // The bidirectional sums arrive at the paths' vertices.
+  gbdpt_sums_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), &base.dvcm, &base.dvc);
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (offset_alive(&o[k])) gbdpt_sums_arrive(dist_off[k], fabs(dot(so[k].ng, wo_off[k])), &o[k].dvcm, &o[k].dvc);
+  }
+#endif
 
 #if defined(GDR_LIGHT_AREA)
   // Emission found by BSDF sampling.
@@ -112,19 +151,30 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     if (direct) {
       acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
     } else {
+#if defined(GDR_GBDPT)
+      float others_x = mis_surface_emission_others(&s, &su, wo, base.dvcm, base.dvc, BIDIR_MIS_BALANCE);
+      for (int k = 0; k < GPT_OFFSETS; ++k) {
+        int alive = offset_alive(&o[k]);
+        float3 c_off = (float3)(0.0f);
+        float others_y = 0.0f;
+        if (alive && so[k].light >= 0) {
+          c_off = vload3(0, o[k].throughput) * surface_radiance(&s, &so[k], wo_off[k]);
+          others_y = mis_surface_emission_others(&s, &so[k], wo_off[k], o[k].dvcm, o[k].dvc, BIDIR_MIS_BALANCE);
+        }
+        add_pair(acc, st->pixel, k, gbdpt_weight(others_x, others_y, o[k].ratio, alive), beta * le, c_off, nonfinite);
+      }
+#else
       float p_light = (last_specular || su.light < 0) ? 0.0f : surface_light_pdf(&s, &su, rh.ray.tfar, wo);
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         float3 le_off = (float3)(0.0f);
         float q_off = 0.0f;
         if (offset_alive(&o[k]) && so[k].light >= 0) {
-          float dist = o[k].mode == GPT_MODE_TRACE          ? o[k].t
-                       : o[k].mode == GPT_MODE_JOINED_RECENT ? length(vload3(0, o[k].prev_pos) - su.p)
-                                                             : rh.ray.tfar;
           le_off = surface_radiance(&s, &so[k], wo_off[k]);
-          if (!o[k].last_delta) q_off = surface_light_pdf(&s, &so[k], dist, wo_off[k]);
+          if (!o[k].last_delta) q_off = surface_light_pdf(&s, &so[k], dist_off[k], wo_off[k]);
         }
         add_bsdf_emission(acc, st->pixel, k, &o[k], p_bsdf, p_light, beta * le, le_off, q_off, nonfinite);
       }
+#endif
     }
   }
 #endif
@@ -149,44 +199,61 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   if (nee_applies(&s, &b) && nee_sample(&s, &ps, st->depth, &su, &frame, &light, &ls, &wi_l)) {
     float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
     float3 c_base = beta * f_le;
+#if defined(GDR_GBDPT)
+    GdrBidirOptions gopts = gbdpt_options();
+    float others_x = mis_light_point_others(&s, &b, wo_l, wi_l, su.ng, light, &ls, base.dvcm, base.dvc, &gopts);
+#else
     float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
+#endif
     int base_ray_needed = 0;
     for (int k = 0; k < GPT_OFFSETS; ++k) {
       // The offset's partner under light sampling reconnects to the same light point: the ratio
-      // of the pair is its prefix ratio. c_off comes weighted with the offset's own pdfs.
-      float r = 0.0f;
-      float3 c_off = (float3)(0.0f);
-      int own_ray = 0;
+      // of the pair is its prefix ratio. The offset's vertex: its BSDF bo, its directions wol
+      // (toward its previous vertex) and wil (toward its light point lo), its normal ng_o.
+      int formed = 0, own_ray = 0;
+      float3 c_off = (float3)(0.0f);  // f(y) |J| / p(x), weighted below
+      Bsdf bo = b;
+      float3 wol = wo_l, wil = wi_l, ng_o = su.ng;
+      LightSample lo = ls;
       if (o[k].mode == GPT_MODE_JOINED) {
-        r = o[k].ratio;
-        c_off = vload3(0, o[k].throughput) * f_le * gpt_weight(p_light, p_b, r);
+        formed = 1;
+        c_off = vload3(0, o[k].throughput) * f_le;
       } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
-        float3 wr = frame_to_local(&frame, wo_off[k]);
-        float q_b = ls.delta ? 0.0f : bsdf_pdf(&b, wr, wi_l);
-        r = o[k].ratio;
-        c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wr, wi_l) * ls.radiance / ls.pdf * gpt_weight(p_light, q_b, r);
+        formed = 1;
+        wol = frame_to_local(&frame, wo_off[k]);
+        c_off = vload3(0, o[k].throughput) * bsdf_eval(&b, wol, wi_l) * ls.radiance / ls.pdf;
       } else if (o[k].mode == GPT_MODE_TRACE) {
-        Bsdf bo = surface_bsdf(&s, &so[k]);
-        LightSample lo = ls;
+        bo = surface_bsdf(&s, &so[k]);
         if (!bsdf_is_delta(&bo) && light_connect(&s, light, so[k].p, &lo)) {
           Frame fo = frame_from_normal(so[k].ns);
-          float3 wol = frame_to_local(&fo, wo_off[k]), wil = frame_to_local(&fo, lo.wi);
+          wol = frame_to_local(&fo, wo_off[k]);
+          wil = frame_to_local(&fo, lo.wi);
+          ng_o = so[k].ng;
           if (sides_agree(lo.wi, so[k].ng, wil.z)) {
-            float q_b = lo.delta ? 0.0f : bsdf_pdf(&bo, wol, wil);
-            r = o[k].ratio;
-            c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf *
-                    gpt_weight(lo.pdf, q_b, r);
-            own_ray = c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f;
-            if (own_ray) {
-              c_off = checked(c_off, nonfinite);
-              pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
-              uint slot = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-              write_light_ray(&shadow_rays[slot], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
-            }
+            formed = 1;
+            c_off = vload3(0, o[k].throughput) * bsdf_eval(&bo, wol, wil) * lo.radiance / lo.pdf;
           }
         }
       }
-      float3 cb = checked(gpt_weight(p_light, p_b, r) * c_base, nonfinite);
+      float r = formed ? o[k].ratio : 0.0f;
+#if defined(GDR_GBDPT)
+      float others_y = formed ? mis_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, o[k].dvcm, o[k].dvc, &gopts) : 0.0f;
+      float w_base = gbdpt_weight(others_x, others_y, r, formed), w_off = w_base;
+#else
+      float q_b = (!formed || lo.delta) ? 0.0f : bsdf_pdf(&bo, wol, wil);
+      float w_base = gpt_weight(p_light, p_b, r), w_off = gpt_weight(lo.pdf, q_b, r);
+#endif
+      c_off = c_off * w_off;
+      if (o[k].mode == GPT_MODE_TRACE) {
+        own_ray = c_off.x > 0.0f || c_off.y > 0.0f || c_off.z > 0.0f;
+        if (own_ray) {
+          c_off = checked(c_off, nonfinite);
+          pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
+          uint slot = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+          write_light_ray(&shadow_rays[slot], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
+        }
+      }
+      float3 cb = checked(w_base * c_base, nonfinite);
       pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
       base_ray_needed |= cb.x > 0.0f || cb.y > 0.0f || cb.z > 0.0f;
       if (!own_ray && (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT)) {
@@ -200,6 +267,14 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
     }
   }
+
+#if defined(GDR_GBDPT)
+  if (!bsdf_is_delta(&b) && gbdpt_connects_at(st->depth, params.path.max_depth)) {
+    records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, is_diffuse(&b, params.shift_threshold), o, so,
+                                     wo_off, params.shift_threshold);
+    connectable[atomic_inc(&counters[GPT_COUNTER_CONNECTABLE])] = g;
+  }
+#endif
 
   // The base's BSDF sample; Russian roulette is decided by the base.
   BsdfSample bs;
@@ -219,9 +294,17 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       kill_offset(&o[k], counters, reason);
     } else {
       offset_keep(&o[k], &pre);
+#if defined(GDR_GBDPT)
+      float3 wr = o[k].mode == GPT_MODE_JOINED_RECENT ? frame_to_local(&frame, wo_off[k]) : wo_l;
+      gbdpt_sums_scatter(o[k].last_delta, o[k].last_pdf, bsdf_pdf(&b, bs.wi, wr), fabs(dot(su.ng, wi)), &o[k].dvcm,
+                         &o[k].dvc);
+#endif
       o[k].mode = GPT_MODE_JOINED;
     }
   }
+#if defined(GDR_GBDPT)
+  gbdpt_sums_scatter(bs.delta, bs.pdf, bsdf_pdf(&b, bs.wi, wo_l), fabs(dot(su.ng, wi)), &base.dvcm, &base.dvc);
+#endif
   for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
 
   path_advance(st, beta, &bs);

@@ -21,7 +21,8 @@ typedef struct GptBaseState {
   float wo[3];          // direction from x_k toward the previous vertex (world)
   float sample_eta;     // relative IOR across x_k (wi side / wo side)
   float rr_prob;        // Russian-roulette survival probability applied at x_k (1: none)
-  float pad0, pad1, pad2;
+  float dvcm, dvc;      // G-BDPT: the camera subpath's bidirectional MIS sums (bidir/subpath_mis.h)
+  float pad0;
 } GptBaseState;
 
 typedef struct GdrGptParams {
@@ -73,7 +74,10 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_FAIL_ZERO, "shift_failures/zero_pdf_or_value") /* or inconsistent sides */           \
   X(GPT_COUNTER_FAIL_NONFINITE, "shift_failures/nonfinite") /* throughput or pdf ratio overflowed */ \
   X(GPT_COUNTER_FAIL_MANIFOLD, "shift_failures/manifold") /* the walk failed (manifold/fail_*) */       \
-  X(GPT_COUNTER_FAIL_CHAIN_LONG, "manifold/fail_chain_too_long") /* over MANIFOLD_MAX_CHAIN vertices */
+  X(GPT_COUNTER_FAIL_CHAIN_LONG, "manifold/fail_chain_too_long") /* over MANIFOLD_MAX_CHAIN vertices */ \
+  X(GPT_COUNTER_CONNECTABLE, "")                            /* G-BDPT: rough camera vertices recorded */ \
+  X(GPT_COUNTER_CONNECTIONS, "gbdpt/connections")           /* camera-light vertex connections tried */ \
+  X(GPT_COUNTER_FAIL_GLOSSY_CONNECTION, "shift_failures/glossy_connection") /* no reconnection there */
 enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };
 
 // The base's specular chain while offsets wait for it (GPT_MODE_MANIFOLD), per group: from its

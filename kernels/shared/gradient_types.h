@@ -31,5 +31,6 @@ typedef struct GptOffsetState {
   int visible;          // RECONNECTING: the reconnection segment was unoccluded
   int last_delta;       // the ray to the current vertex left a delta lobe
   int glossy_next_only; // TRACE: the shift holds only if the current vertex is glossy
+  float dvcm, dvc;      // G-BDPT: the offset's own bidirectional MIS sums (bidir/subpath_mis.h)
   int pad0;
 } GptOffsetState;

@@ -155,6 +155,14 @@ void BidirSubpaths::trace_camera_subpaths(const GdrPtParams& p, const BidirSink&
   }
 }
 
+void BidirSubpaths::trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink) {
+  options_ = o;
+  primary_ = PrimarySamples();
+  stored_bound_ = 0;
+  stored_ = 0;
+  trace_light_subpaths(p, sink);
+}
+
 void BidirSubpaths::trace(const GdrPtParams& p, const GdrBidirOptions& o, bool light, const PrimarySamples& primary,
                           const BidirSink& sink, AuxLayers* aux) {
   options_ = o;

@@ -51,6 +51,13 @@ class BidirSubpaths {
   // subpaths (no light, or paths too short for them). `aux`: the camera rays' first hits.
   void trace(const GdrPtParams& p, const GdrBidirOptions& o, bool light, const PrimarySamples& primary,
              const BidirSink& sink, AuxLayers* aux);
+  // The light subpaths alone, their vertices left in the store for the caller's own camera
+  // subpaths (G-BDPT's groups: GroupLightSubpaths).
+  void trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink);
+  const Buffer<GdrBidirPathState>& light_paths() const { return light_paths_; }
+  const Buffer<GdrBidirVertex>& store() const { return store_; }
+  int stored_bound() const { return stored_bound_; }
+
   // Adds the counters' totals to the stats.
   void report(Stats* stats) { counters_.report(stats); }
 

@@ -1,5 +1,7 @@
 #include "integrators/gpt/gradient_groups.h"
 
+#include <algorithm>
+
 #include "render/wavefront/chunks.h"
 #include "util/log.h"
 
@@ -14,8 +16,10 @@ namespace {
 constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
 constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
 
-Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt) {
-  return gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
+Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, bool connecting) {
+  Defines d = gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
+  if (connecting) d["GDR_GBDPT"] = "1";
+  return d;
 }
 
 }  // namespace
@@ -38,15 +42,17 @@ size_t GradientGroups::chunk_capacity_for(const RenderInputs& in, const GptSetti
                         in.scene.camera.width, in.scene.camera.height);
 }
 
-GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, size_t capacity, size_t indices)
+GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, size_t capacity, size_t indices,
+                               bool connecting)
     : in_(in),
       gpt_(gpt),
-      kernels_(in.context, in.scene, gpt_defines(in, gpt)),
-      generate_(kernels_.make(kProgram, "gpt_generate")),
-      scatter_(kernels_.make(kProgram, "gpt_scatter")),
-      shade_(kernels_.make(kProgram, "gpt_shade")),
-      shadow_(kernels_.make(kProgram, "gpt_shadow")),
-      shift_(kernels_.make(kProgram, "gpt_shift")),
+      connecting_(connecting),
+      kernels_(in.context, in.scene, gpt_defines(in, gpt, connecting)),
+      generate_(kernels_.make(program(), "gpt_generate")),
+      scatter_(kernels_.make(program(), "gpt_scatter")),
+      shade_(kernels_.make(program(), "gpt_shade")),
+      shadow_(kernels_.make(program(), "gpt_shadow")),
+      shift_(kernels_.make(program(), "gpt_shift")),
       capacity_(capacity),
       base_queues_(in.context, capacity_, false),
       offset_rays_(in.context, capacity_ * GPT_OFFSETS, kRayQueueFlags),
@@ -56,15 +62,18 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
       offsets_(in.context, capacity_ * GPT_OFFSETS),
       acc_(in.context, indices * GPT_ACC_COUNT),
       pend_(in.context, capacity_ * GPT_PEND_COUNT),
+      records_(in.context, connecting ? capacity_ : 0),
+      connectable_(in.context, connecting ? capacity_ : 0),
       counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)) {
   const bool manifold = gpt_manifold_enabled(in.scene, gpt);
   chains_ = Buffer<GptChain>(in.context, manifold ? capacity_ : 0);
   walks_ = Buffer<GdrManifoldWalk>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
   walk_results_ = Buffer<GdrManifoldResult>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
   if (manifold) {
-    manifold_.emplace(in, kernels_, kProgram, capacity_ * GPT_OFFSETS, gpt.manifold);
-    join_.emplace(kernels_.make(kProgram, "gpt_manifold_join"));
+    manifold_.emplace(in, kernels_, program(), capacity_ * GPT_OFFSETS, gpt.manifold);
+    join_.emplace(kernels_.make(program(), "gpt_manifold_join"));
   }
+  if (connecting) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
   if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
 }
 
@@ -91,7 +100,31 @@ void GradientGroups::walk_offsets(const GdrGptParams& p, cl_uint walks) {
   counters_.read();
 }
 
-void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux) {
+void GradientGroups::add_shadows(cl_uint count, const char* kind) {
+  if (count == 0) return;
+  occlude(in_.embree, shadow_rays_, count, kind);
+  shadow_.args(count, shadow_rays_, pend_, bases_, acc_).run(count);
+}
+
+void GradientGroups::connect(const GdrGptParams& p, int camera_depth, cl_uint connectable,
+                             const GroupLightSubpaths& light) {
+  // Vertex j of a light subpath lies j + 1 bounces or more from its light, and the connection
+  // adds a segment.
+  const int max_depth = p.path.max_depth;
+  const int last = max_depth < 0 ? light.stored_bound : std::min(light.stored_bound, max_depth - camera_depth - 1);
+  for (int j = 0; j < last; ++j) {
+    counters_.reset();
+    connect_
+        ->args(p, connectable, cl_uint(j), light.stride, connectable_, records_, light.paths, light.store,
+               shadow_rays_, pend_, counters_.buffer(), in_.device_scene)
+        .run(connectable);
+    counters_.read();
+    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "connection");
+  }
+}
+
+void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
+                           const GroupLightSubpaths* light) {
   Buffer<GdrRayHit>* base_rays = base_queues_.rays;
   const cl_uint count = p.path.pixel_count;
 
@@ -106,19 +139,17 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
   intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], 0);
 
   cl_uint active = count;
-  for (int cur = 0; active > 0; cur = 1 - cur) {
+  for (int cur = 0, depth = 0; active > 0; cur = 1 - cur, ++depth) {
     counters_.reset();
     shade_
-        .args(p, active, base_rays[cur], base_rays[1 - cur], shadow_rays_, bases_, offsets_, acc_, pend_,
-              counters_.buffer(), primary, in_.device_scene)
+        .args(p, active, base_rays[cur], base_rays[1 - cur], shadow_rays_, bases_, offsets_, acc_, pend_, records_,
+              connectable_, counters_.buffer(), primary, in_.device_scene)
         .run(active);
     counters_.read();
-    cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], shadows = counters_[GPT_COUNTER_SHADOW_RAYS];
+    const cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], connectable = counters_[GPT_COUNTER_CONNECTABLE];
     intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
-    if (shadows > 0) {
-      occlude(in_.embree, shadow_rays_, shadows, "shadow");
-      shadow_.args(shadows, shadow_rays_, pend_, bases_, acc_).run(shadows);
-    }
+    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "shadow");
+    if (light && connectable > 0) connect(p, depth + 1, connectable, *light);
     if (next > 0) {
       counters_.reset();
       shift_

@@ -4,7 +4,9 @@
 // float4 at its path index). The gradient-domain path tracer traces a batch per chunk of pixels
 // (the index is the pixel, and its gather reads the neighbours' sums); the gradient-domain
 // Metropolis integrator one per step of its chains (the index is the chain, whose state feeds the
-// group's random numbers through the sampler seam).
+// group's random numbers through the sampler seam). The gradient-domain bidirectional path tracer
+// builds them from its own program (G-PT's steps with G-BDPT's MIS) and connects each group's
+// rough vertices to the vertices of one light subpath a group (GroupLightSubpaths).
 #pragma once
 #include <optional>
 
@@ -16,6 +18,7 @@
 #include "render/wavefront/device_counters.h"
 #include "render/wavefront/kernel_factory.h"
 #include "render/wavefront/ray_queues.h"
+#include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 
 namespace gdr {
@@ -33,12 +36,25 @@ GptSettings gpt_shift_settings(const IntegratorParams& params, const std::string
 // Whether --shift manifold walks in this scene (it has specular chains).
 bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt);
 
+// The light subpaths of a batch of groups (BidirSubpaths: group i's is subpath i), whose stored
+// vertices (vertex j of subpath i at store[j * stride + i]) the groups connect to.
+struct GroupLightSubpaths {
+  const Buffer<GdrBidirPathState>& paths;
+  const Buffer<GdrBidirVertex>& store;
+  cl_uint stride;
+  int stored_bound;  // no subpath stored more vertices
+};
+
 class GradientGroups {
  public:
   static constexpr const char* kProgram = "gpt/gpt.cl";
+  static constexpr const char* kConnectingProgram = "gbidir/gbdpt.cl";
 
   // Up to `capacity` groups a batch; `indices` path indices (acc holds GPT_ACC_COUNT a path).
-  GradientGroups(const RenderInputs& inputs, const GptSettings& gpt, size_t capacity, size_t indices);
+  // `connecting`: G-BDPT's groups (kConnectingProgram), which connect to light subpaths.
+  GradientGroups(const RenderInputs& inputs, const GptSettings& gpt, size_t capacity, size_t indices,
+                 bool connecting = false);
+  const char* program() const { return connecting_ ? kConnectingProgram : kProgram; }
 
   // Groups in flight for a chunk of the scene's film (fewer with the manifold shift: its walks'
   // state).
@@ -51,8 +67,9 @@ class GradientGroups {
   const Buffer<GptBaseState>& bases() const { return bases_; }
 
   // The groups of paths [p.path.first_pixel, + p.path.pixel_count), their sums into acc.
-  // `aux`: the base camera rays' first hits.
-  void trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux);
+  // `aux`: the base camera rays' first hits. `light`: connecting groups' light subpaths.
+  void trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
+             const GroupLightSubpaths* light = nullptr);
   GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
   void report(Stats* stats);
 
@@ -61,9 +78,15 @@ class GradientGroups {
   void intersect_offsets(cl_uint rays, cl_uint reconnects);
   // Solves the walks the shift step queued and joins their offsets to the base.
   void walk_offsets(const GdrGptParams& p, cl_uint walks);
+  // The pending values behind the shadow rays written since the last reset, where unoccluded.
+  void add_shadows(cl_uint count, const char* kind);
+  // The recorded vertices (`connectable` of them, `camera_depth` segments from the camera) to
+  // the light subpaths' stored vertices, one launch a vertex index.
+  void connect(const GdrGptParams& p, int camera_depth, cl_uint connectable, const GroupLightSubpaths& light);
 
   RenderInputs in_;
   GptSettings gpt_;
+  bool connecting_;
   KernelFactory kernels_;
   Kernel generate_, scatter_, shade_, shadow_, shift_;
   size_t capacity_;
@@ -75,6 +98,9 @@ class GradientGroups {
   Buffer<GptOffsetState> offsets_;
   Buffer<Vec4> acc_;
   Buffer<Vec4> pend_;  // GPT_PEND_COUNT per group
+  Buffer<GbdptCameraVertex> records_;  // connecting groups: the rough vertex of the last shade step
+  Buffer<cl_uint> connectable_;        // and the groups that recorded one
+  std::optional<Kernel> connect_;
   DeviceCounters counters_;
   // The manifold shift, where the scene has specular chains (else --shift manifold is hybrid).
   Buffer<GptChain> chains_;

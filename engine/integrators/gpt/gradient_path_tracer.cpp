@@ -15,13 +15,23 @@ GptSettings gpt_settings(const IntegratorParams& params) {
 }
 
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
+    : GradientPathTracer(in, gpt, params, false) {}
+
+GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params,
+                                       bool connecting)
     : in_(in),
-      params_(params),
       groups_(in, gpt, GradientGroups::chunk_capacity_for(in, gpt),
-              size_t(in.scene.camera.width) * in.scene.camera.height),
-      gather_(groups_.kernels().make(GradientGroups::kProgram, "gpt_gather")),
+              size_t(in.scene.camera.width) * in.scene.camera.height, connecting),
+      params_(params),
+      gather_(groups_.kernels().make(groups_.program(), "gpt_gather")),
       film_(in.context, in.scene.camera.width, in.scene.camera.height) {
-  if (gpt.aux) aux_.emplace(in.context, groups_.kernels(), GradientGroups::kProgram, film_.pixels());
+  if (gpt.aux) aux_.emplace(in.context, groups_.kernels(), groups_.program(), film_.pixels());
+}
+
+void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
+                                     uint32_t count) {
+  groups_.trace(groups_.params(settings, sample, first, count), PrimarySamples(), aux());
+  groups_.report(in_.context.stats());
 }
 
 GradientImages GradientPathTracer::render_gradients(const RenderSettings& settings) {
@@ -35,8 +45,7 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
     // Launches queue without a wait each; the host waits where it reads (counters, Embree maps).
     DeferredTiming deferred(in_.context);
     for_each_chunk(pixels, groups_.capacity(), [&](uint32_t first, uint32_t count) {
-      groups_.trace(groups_.params(settings, uint32_t(sample), first, count), PrimarySamples(), aux_ ? &*aux_ : nullptr);
-      groups_.report(stats);
+      trace_chunk(settings, uint32_t(sample), first, count);
     });
     gather_.args(w, h, groups_.acc(), film_.pass(sample)).run(pixels);
   });

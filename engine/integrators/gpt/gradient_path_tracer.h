@@ -34,10 +34,19 @@ class GradientPathTracer : public Integrator {
   GradientImages render_gradients(const RenderSettings& settings);
   RenderResult render(const RenderSettings& settings) override;
 
- private:
+ protected:
+  // `connecting`: the groups of the gradient-domain bidirectional path tracer (GradientGroups).
+  GradientPathTracer(const RenderInputs& inputs, const GptSettings& gpt, const IntegratorParams& params,
+                     bool connecting);
+  // The groups of pixels [first, first + count) in pass `sample`, their sums into groups_.acc().
+  virtual void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
+  AuxLayers* aux() { return aux_ ? &*aux_ : nullptr; }
+
   RenderInputs in_;
-  IntegratorParams params_;  // the reconstruction's
   GradientGroups groups_;    // acc: a pixel's groups' sums at the pixel (the gather reads neighbours)
+
+ private:
+  IntegratorParams params_;  // the reconstruction's
   Kernel gather_;
   GradientFilm film_;
   std::optional<AuxLayers> aux_;

@@ -1,0 +1,57 @@
+#include "integrators/gbidir/gradient_bidirectional.h"
+
+#include "integrators/bidir/bidirectional.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace gdr {
+namespace {
+
+// The light subpaths' options: bdpt's store, the balance heuristic, no connections to the camera.
+GdrBidirOptions light_options() {
+  GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 1};
+  return o;
+}
+
+}  // namespace
+
+const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux"};
+
+GptSettings gbdpt_settings(const IntegratorParams& params) {
+  GptSettings s = gpt_shift_settings(params);
+  if (s.shift == GPT_SHIFT_MANIFOLD) {
+    throw Error("integrator parameter shift: gbdpt shifts by hybrid or replay (a manifold walk's offsets carry no "
+                "bidirectional MIS sums)");
+  }
+  s.aux = params.flag("aux", false);
+  return s;
+}
+
+GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSettings& gpt,
+                                             const IntegratorParams& params)
+    : GradientPathTracer(in, gpt, params, true),
+      subpaths_(in, BIDIR_BDPT, groups_.capacity()),
+      splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()) {}
+
+void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
+                                        uint32_t count) {
+  GdrGptParams p = groups_.params(settings, sample, first, count);
+  p.path.max_depth = bdpt_segments(settings.max_depth);
+  const bool light = light_subpaths_allowed(settings.max_depth) && p.path.light_count > 0;
+  if (light) subpaths_.trace_light(p.path, light_options(), BidirSink{groups_.acc(), splats_});
+  const GroupLightSubpaths subpaths{subpaths_.light_paths(), subpaths_.store(), cl_uint(subpaths_.capacity()),
+                                    subpaths_.stored_bound()};
+  groups_.trace(p, PrimarySamples(), aux(), light ? &subpaths : nullptr);
+  groups_.report(in_.context.stats());
+  subpaths_.report(in_.context.stats());
+}
+
+RenderResult GradientBidirectional::render(const RenderSettings& settings) {
+  if (bdpt_segments(settings.max_depth) != settings.max_depth) {
+    log::warn("gbdpt renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
+              " asked for more): the light-vertex store's bound");
+  }
+  return GradientPathTracer::render(settings);
+}
+
+}  // namespace gdr

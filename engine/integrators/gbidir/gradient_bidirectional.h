@@ -1,0 +1,45 @@
+// Gradient-domain bidirectional path tracing (`gbdpt`, Manzi et al. 2015): per pixel sample a light
+// subpath (the bidirectional kernels', BidirSubpaths) and a group of camera subpaths, the base and
+// its four offsets through the neighbouring pixels, shifted by G-PT's shifts (GradientGroups
+// built connecting: kernels/gbidir). Every strategy with s >= 0 light and t >= 2 camera vertices
+// is evaluated on the base and on each offset: the emission the camera subpaths find (s = 0),
+// their connections to a light point (s = 1) and to each stored vertex of the pixel's light
+// subpath (s >= 2). An offset that shares the base's vertex shares its connection segment; one at
+// a vertex of its own reconnects to the same light vertex, where both camera vertices and the light
+// vertex are diffuse (else that connection's shift fails, counted in
+// shift_failures/glossy_connection). Base and offset of a strategy share the balance heuristic
+// over all strategies of both paths (kernels/gbidir/weights.h); the primal is the sum of the base
+// paths' shares, as G-PT's. Outputs and reconstruction are G-PT's.
+//
+// Left out: light tracing (t = 1) is none of its strategies (the camera subpaths' sums give it no
+// share, so the weights still sum to one over the others); paths only light tracing reaches, such
+// as a point light's caustic seen directly, are missing. The manifold shift is refused: its
+// offsets would need their bidirectional sums through the walk's vertices.
+//
+// Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux
+// as gpt's; recon, recon_solver, alpha: the reconstruction (render/gradient_images.h). Paths are
+// bdpt's: at most kBdptMaxSegments segments.
+#pragma once
+#include "integrators/bidir/subpaths.h"
+#include "integrators/gpt/gradient_path_tracer.h"
+#include "render/splat_film.h"
+
+namespace gdr {
+
+extern const std::vector<std::string> kGbdptParams;
+GptSettings gbdpt_settings(const IntegratorParams& params);
+
+class GradientBidirectional : public GradientPathTracer {
+ public:
+  GradientBidirectional(const RenderInputs& inputs, const GptSettings& gpt, const IntegratorParams& params = {});
+
+  RenderResult render(const RenderSettings& settings) override;
+
+ private:
+  void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) override;
+
+  BidirSubpaths subpaths_;  // the light subpaths, one a group
+  SplatFilm splats_;        // the light subpaths' camera connections' slots (none: t = 1 is left out)
+};
+
+}  // namespace gdr

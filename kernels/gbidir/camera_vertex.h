@@ -1,0 +1,50 @@
+// G-BDPT's record of a rough camera vertex of a group (shared/gbidir_types.h): written by the shade
+// step (gpt/shade.h built with GDR_GBDPT), read by the connections (gbidir/connect.h).
+#pragma once
+#include "gradient/offsets.h"
+#include "path/scene.h"
+#include "shared/gbidir_types.h"
+#include "shared/gpt_types.h"
+#include "shift/policy.h"
+
+inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float3 throughput, float dvcm, float dvc,
+                                   int depth) {
+  GdrBidirVertex x;
+  x.prim = prim;
+  x.u = u;
+  x.v = v;
+  vstore3(wo, 0, x.wo);
+  vstore3(throughput, 0, x.throughput);
+  x.dvcm = dvcm;
+  x.dvc = dvc;
+  x.dvm = 0.0f;
+  x.depth = depth;
+  return x;
+}
+
+// The base at hit h (toward its previous vertex wo, throughput beta, diffuse or not) with its
+// offsets o at their vertices so (toward their previous vertices wo_off). A traced offset connects
+// by reconnection, as the shift would go on from a pair of diffuse vertices; from any other pair
+// the shift copies the half vector, which no connection to a given light vertex follows.
+inline GbdptCameraVertex gbdpt_camera_vertex(const SceneData* s, const GdrHit* h, float3 wo, float3 beta,
+                                             const GptBaseState* base, int diffuse, const GptOffsetState* o,
+                                             const Surface* so, const float3* wo_off, float threshold) {
+  GbdptCameraVertex r;
+  int depth = base->path.depth + 1;
+  r.base = gbdpt_vertex(h->primID, h->u, h->v, wo, beta, base->dvcm, base->dvc, depth);
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    float3 thr = vload3(0, o[k].throughput);
+    r.ratio[k] = o[k].ratio;
+    r.state[k] = GBDPT_OFFSET_NONE;
+    r.offset[k] = r.base;
+    if (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT) {
+      r.state[k] = GBDPT_OFFSET_SHARED;
+      r.offset[k] = gbdpt_vertex(h->primID, h->u, h->v, wo_off[k], thr, o[k].dvcm, o[k].dvc, depth);
+    } else if (o[k].mode == GPT_MODE_TRACE) {
+      Bsdf bo = surface_bsdf(s, &so[k]);
+      r.state[k] = diffuse && is_diffuse(&bo, threshold) ? GBDPT_OFFSET_OWN : GBDPT_OFFSET_GLOSSY;
+      r.offset[k] = gbdpt_vertex(o[k].prim, o[k].b1, o[k].b2, wo_off[k], thr, o[k].dvcm, o[k].dvc, depth);
+    }
+  }
+  return r;
+}

@@ -1,0 +1,68 @@
+// G-BDPT's connections (s >= 2 light, t >= 2 camera vertices): each recorded camera vertex of a
+// group (gbidir/camera_vertex.h), the base's and its offsets', connects to vertex j of the group's
+// light subpath. The offset path of a connection is the base's with the camera prefix shifted: an
+// offset at the base's vertex shares the base's connection segment; one at a vertex of its own
+// reconnects there to the same light vertex (Manzi et al. 2015), which holds where that light
+// vertex is diffuse too (the shift would copy the half vector toward a glossy one). Values wait
+// in G-PT's pending slots for their shadow rays (gpt_shadow adds them).
+#pragma once
+#include "bidir/connection.h"
+#include "gbidir/weights.h"
+#include "path/film.h"
+#include "shared/gbidir_types.h"
+#include "shared/gpt_types.h"
+#include "shift/policy.h"
+
+__kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride, __global const uint* connectable,
+                            __global const GbdptCameraVertex* records, __global const GdrBidirPathState* light_paths,
+                            __global const GdrBidirVertex* store, __global GdrRay* shadow_rays, __global float4* pend,
+                            __global uint* counters, SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  uint g = connectable[q];
+  if ((int)j >= light_paths[g].stored) return;
+  GdrBidirVertex y = store[j * stride + g];
+  GbdptCameraVertex rec = records[g];
+  int max_depth = params.path.max_depth;
+  if (max_depth >= 0 && rec.base.depth + y.depth + 1 > max_depth) return;
+  SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
+  GdrBidirOptions o = gbdpt_options();
+  BidirConnection cx;
+  if (!bidir_connection(&s, &rec.base, &y, &o, &cx)) return;
+  atomic_inc(&counters[GPT_COUNTER_CONNECTIONS]);
+  Surface sy = surface_at(&s, y.prim, y.u, y.v);
+  Bsdf by = surface_bsdf(&s, &sy);
+  int y_diffuse = is_diffuse(&by, params.shift_threshold);
+
+  for (int i = 0; i < GPT_PEND_COUNT; ++i) pend[g * GPT_PEND_COUNT + i] = (float4)(0.0f);
+  int base_ray_needed = 0;
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    int state = rec.state[k], formed = 0;
+    BidirConnection cy;
+    cy.value = (float3)(0.0f);
+    cy.others = 0.0f;
+    if (state == GBDPT_OFFSET_OWN && !y_diffuse) state = GBDPT_OFFSET_GLOSSY;
+    if (state == GBDPT_OFFSET_GLOSSY) atomic_inc(&counters[GPT_COUNTER_FAIL_GLOSSY_CONNECTION]);
+    if (state == GBDPT_OFFSET_SHARED || state == GBDPT_OFFSET_OWN) {
+      formed = bidir_connection(&s, &rec.offset[k], &y, &o, &cy);
+    }
+    float w = gbdpt_weight(cx.others, cy.others, rec.ratio[k], formed);
+    float3 cb = checked(w * cx.value, nonfinite), co = checked(w * cy.value, nonfinite);
+    pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
+    base_ray_needed |= max3(cb) > 0.0f;
+    if (!formed || !(max3(co) > 0.0f)) continue;
+    if (state == GBDPT_OFFSET_SHARED) {
+      pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
+      base_ray_needed = 1;
+    } else {
+      pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(co, 0.0f);
+      uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+      write_segment_ray(&shadow_rays[r], cy.from, cy.from_ng, cy.to, GPT_SHADOW_ID(g, 1 + k));
+    }
+  }
+  if (base_ray_needed) {
+    uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
+    write_segment_ray(&shadow_rays[r], cx.from, cx.from_ng, cx.to, GPT_SHADOW_ID(g, 0));
+  }
+}

@@ -1,0 +1,23 @@
+// State of the gradient-domain bidirectional integrator (`gbdpt`), shared by its kernels and the
+// host loop. Its camera subpaths are G-PT's groups (shared/gpt_types.h: a base and four offsets
+// through the neighbouring pixels), its light subpaths the bidirectional integrator's
+// (shared/bidir_types.h, one per group); these records join the two.
+#pragma once
+#include "shared/bidir_types.h"
+#include "shared/gradient_types.h"
+
+// How an offset stands at a camera vertex its base may connect from.
+#define GBDPT_OFFSET_NONE 0    // dead, or waiting: contributes nothing, the base takes the full weight
+#define GBDPT_OFFSET_OWN 1     // at a vertex of its own (its connections need rays of their own)
+#define GBDPT_OFFSET_SHARED 2  // at the base's vertex (joined): shares the base's connection segments
+#define GBDPT_OFFSET_GLOSSY 3  // at a vertex of its own, but the shift there is no reconnection: fails
+
+// A rough camera vertex of a group, written by the shade step for the connections to the light
+// subpath's stored vertices: the base's vertex and each offset's, with its throughput
+// (f(y) |J| / p(x)), its pdf ratio to the base (p(y) |J| / p(x)) and its own MIS sums.
+typedef struct GbdptCameraVertex {
+  GdrBidirVertex base;
+  GdrBidirVertex offset[GPT_OFFSETS];
+  float ratio[GPT_OFFSETS];
+  int state[GPT_OFFSETS];  // GBDPT_OFFSET_*
+} GbdptCameraVertex;

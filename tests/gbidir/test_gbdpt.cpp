@@ -1,0 +1,102 @@
+// Gradient-domain bidirectional path tracing (`gbdpt`) is unbiased: its gradients and primal agree
+// with neighbour differences and pixels of the path tracer on a diffuse, a glossy and a specular
+// scene (support/gradient_unbiased.h: 24 runs of 4 samples a pixel at seeds 1..24 against pt at
+// seeds 1000..1023, false-positive rate 1e-3 per case), and its primal agrees with bdpt's image
+// (16 runs of 8 samples a pixel each, gbdpt seeds 1..16, bdpt seeds 101..116, per block and whole
+// image, false-positive rate 1e-3: support/agreement.h). Its connections are counted, the shifts
+// that cannot reconnect at a glossy vertex are counted as failures, and the manifold shift is
+// refused.
+#include <gtest/gtest.h>
+
+#include "integrators/bidir/bidirectional.h"
+#include "integrators/gbidir/gradient_bidirectional.h"
+#include "scene/load_scene.h"
+#include "support/agreement.h"
+#include "support/gradient_unbiased.h"
+#include "support/envmap_scene.h"
+#include "support/render.h"
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+Scene project_scene(const std::string& name) { return load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name); }
+
+void expect_unbiased(const std::string& scene_file, int shift) {
+  GptSettings gs = gbdpt_settings(IntegratorParams{});
+  gs.shift = shift;
+  test::expect_gradients_unbiased(project_scene(scene_file), scene_file, [&](const RenderInputs& in) {
+    return std::make_unique<GradientBidirectional>(in, gs);
+  });
+}
+
+TEST(GbdptUnbiased, DiffuseCornellBoxHybrid) { expect_unbiased("cornell-box.xml", GPT_SHIFT_HYBRID); }
+TEST(GbdptUnbiased, DiffuseCornellBoxReplay) { expect_unbiased("cornell-box.xml", GPT_SHIFT_REPLAY); }
+TEST(GbdptUnbiased, GlossyPlatesHybrid) { expect_unbiased("glossy-plates.xml", GPT_SHIFT_HYBRID); }
+TEST(GbdptUnbiased, GlossyPlatesReplay) { expect_unbiased("glossy-plates.xml", GPT_SHIFT_REPLAY); }
+TEST(GbdptUnbiased, MirrorAndGlassHybrid) { expect_unbiased("cornell-box-caustics.xml", GPT_SHIFT_HYBRID); }
+TEST(GbdptUnbiased, GlassBoxHybrid) { expect_unbiased("glass-box.xml", GPT_SHIFT_HYBRID); }
+// Light subpaths from an environment map and a sun (emitted through the scene's bounding disc).
+TEST(GbdptUnbiased, EnvironmentMapHybrid) {
+  GptSettings gs = gbdpt_settings(IntegratorParams{});
+  test::expect_gradients_unbiased(test::envmap_scene(), "envmap scene", [&](const RenderInputs& in) {
+    return std::make_unique<GradientBidirectional>(in, gs);
+  });
+}
+
+TEST(Gbdpt, PrimalAgreesWithBdpt) {
+  constexpr int kRuns = 16, kSpp = 8, kMaxDepth = 6;
+  Scene scene = test::small_film(project_scene("cornell-box-caustics.xml"), 24);
+  test::SceneOnDevice on_device(scene);
+  GradientBidirectional gbdpt(on_device.inputs(), gbdpt_settings(IntegratorParams{}));
+  Bidirectional bdpt(on_device.inputs(), bdpt_settings(IntegratorParams{}));
+  const int w = scene.camera.width, h = scene.camera.height;
+  std::vector<std::vector<double>> primal;
+  for (int k = 0; k < kRuns; ++k) {
+    RenderSettings s;
+    s.spp = kSpp;
+    s.seed = 1 + k;
+    s.max_depth = kMaxDepth;
+    primal.push_back(test::block_luminance(gbdpt.render_gradients(s).primal, w, h));
+  }
+  test::expect_blocks_agree(primal, test::block_means(bdpt, w, h, kSpp, kMaxDepth, 101, kRuns),
+                            "cornell-box-caustics.xml", "gbdpt primal", "bdpt");
+}
+
+// On the Cornell box every vertex is diffuse: every offset connection reconnects. With the shift
+// threshold above the roughness of three of the glossy plates (0.005, 0.02, 0.07: glossy under
+// 0.1), the offsets' connections from those plates fail, counted.
+TEST(Gbdpt, StatsCountConnectionsAndFailures) {
+  using Values = std::map<std::string, std::string>;
+  for (const char* name : {"cornell-box.xml", "glossy-plates.xml"}) {
+    const bool diffuse = std::string(name) == "cornell-box.xml";
+    Scene scene = test::small_film(project_scene(name), 16);
+    Stats stats;
+    Context context(select_device(""), &stats);
+    test::SceneOnDevice on_device(scene, &stats, context);
+    IntegratorParams params(diffuse ? Values{} : Values{{"shift_threshold", "0.1"}});
+    GradientBidirectional gbdpt(on_device.inputs(), gbdpt_settings(params), params);
+    RenderSettings s;
+    s.spp = 4;
+    RenderResult r = gbdpt.render(s);
+    EXPECT_GT(stats.count("gbdpt/connections"), 0u) << name;
+    EXPECT_EQ(stats.count("samples/nonfinite_rejected"), 0u) << name;
+    EXPECT_TRUE(r.image.has_rgb_layer("dx") && r.image.has_rgb_layer("dy") && r.image.has_rgb_layer("primal"));
+    if (diffuse) {
+      EXPECT_EQ(stats.count("shift_failures/glossy_connection"), 0u) << name;
+    } else {
+      EXPECT_GT(stats.count("shift_failures/glossy_connection"), 0u) << name;
+    }
+  }
+}
+
+TEST(Gbdpt, ParametersAreChecked) {
+  using Values = std::map<std::string, std::string>;
+  for (const Values& bad : {Values{{"shift", "manifold"}}, Values{{"shift", "bent"}}}) {
+    EXPECT_THROW(gbdpt_settings(IntegratorParams(bad)), Error) << bad.begin()->second;
+  }
+  EXPECT_EQ(gbdpt_settings(IntegratorParams(Values{{"shift", "replay"}})).shift, GPT_SHIFT_REPLAY);
+}
+
+}  // namespace
+}  // namespace gdr
