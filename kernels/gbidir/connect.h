@@ -28,12 +28,13 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
   __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
   GdrBidirOptions o = gbdpt_options();
+  // The base's vertex and the light vertex are evaluated once; offsets at the base's vertex share
+  // them, and those that also share its direction (joined before it) the whole connection.
+  ConnectionEnd ez = connection_end(&s, &rec.base), ey = connection_end(&s, &y);
   BidirConnection cx;
-  if (!bidir_connection(&s, &rec.base, &y, &o, &cx)) return;
+  if (!bidir_connection_ends(&ez, &rec.base, &ey, &y, &o, &cx)) return;
   atomic_inc(&counters[GPT_COUNTER_CONNECTIONS]);
-  Surface sy = surface_at(&s, y.prim, y.u, y.v);
-  Bsdf by = surface_bsdf(&s, &sy);
-  int y_diffuse = is_diffuse(&by, params.shift_threshold);
+  int y_diffuse = is_diffuse(&ey.b, params.shift_threshold);
 
   for (int i = 0; i < GPT_PEND_COUNT; ++i) pend[g * GPT_PEND_COUNT + i] = (float4)(0.0f);
   int base_ray_needed = 0;
@@ -44,8 +45,14 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
     cy.others = 0.0f;
     if (state == GBDPT_OFFSET_OWN && !y_diffuse) state = GBDPT_OFFSET_GLOSSY;
     if (state == GBDPT_OFFSET_GLOSSY) atomic_inc(&counters[GPT_COUNTER_FAIL_GLOSSY_CONNECTION]);
-    if (state == GBDPT_OFFSET_SHARED || state == GBDPT_OFFSET_OWN) {
-      formed = bidir_connection(&s, &rec.offset[k], &y, &o, &cy);
+    if (state == GBDPT_OFFSET_SHARED && all(vload3(0, rec.offset[k].wo) == vload3(0, rec.base.wo))) {
+      cy = bidir_connection_rejoined(&cx, &rec.offset[k], &o);
+      formed = 1;
+    } else if (state == GBDPT_OFFSET_SHARED) {
+      formed = bidir_connection_ends(&ez, &rec.offset[k], &ey, &y, &o, &cy);
+    } else if (state == GBDPT_OFFSET_OWN) {
+      ConnectionEnd eo = connection_end(&s, &rec.offset[k]);
+      formed = bidir_connection_ends(&eo, &rec.offset[k], &ey, &y, &o, &cy);
     }
     float w = gbdpt_weight(cx.others, cy.others, rec.ratio[k], formed);
     float3 cb = checked(w * cx.value, nonfinite), co = checked(w * cy.value, nonfinite);
