@@ -194,8 +194,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   // Connection to the camera: beta f (cos / d^2) cos_theta We, spread by the pixels' filters.
   GdrCamera cam = *camera;
   CameraProjection pr;
-  if ((connects || opts.technique == BIDIR_LT) && !opts.no_camera_connections &&
-      segments_allowed(params.max_depth, k + 1) && !delta &&
+  if ((connects || opts.technique == BIDIR_LT) && segments_allowed(params.max_depth, k + 1) && !delta &&
       bidir_strategy_shown(&st, k + 1, 1) && camera_project(&cam, su.p, &pr)) {
     float3 wc = -pr.dir, wc_local = frame_to_local(&frame, wc);
     float3 f = bsdf_eval_transport(&b, wo_local, wc_local, TRANSPORT_IMPORTANCE) *

@@ -7,7 +7,7 @@
 #include "shared/gpt_types.h"
 #include "shift/policy.h"
 
-inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float3 throughput, float dvcm, float dvc,
+inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float3 throughput, const GbdptSums* m,
                                    int depth) {
   GdrBidirVertex x;
   x.prim = prim;
@@ -15,8 +15,8 @@ inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float
   x.v = v;
   vstore3(wo, 0, x.wo);
   vstore3(throughput, 0, x.throughput);
-  x.dvcm = dvcm;
-  x.dvc = dvc;
+  x.dvcm = m->dvcm;
+  x.dvc = m->dvc;
   x.dvm = 0.0f;
   x.depth = depth;
   return x;
@@ -31,7 +31,9 @@ inline GbdptCameraVertex gbdpt_camera_vertex(const SceneData* s, const GdrHit* h
                                              const Surface* so, const float3* wo_off, float threshold) {
   GbdptCameraVertex r;
   int depth = base->path.depth + 1;
-  r.base = gbdpt_vertex(h->primID, h->u, h->v, wo, beta, base->dvcm, base->dvc, depth);
+  r.base = gbdpt_vertex(h->primID, h->u, h->v, wo, beta, &base->mis, depth);
+  r.all_dvcm[0] = base->mis.all_dvcm;
+  r.all_dvc[0] = base->mis.all_dvc;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     float3 thr = vload3(0, o[k].throughput);
     r.ratio[k] = o[k].ratio;
@@ -39,12 +41,14 @@ inline GbdptCameraVertex gbdpt_camera_vertex(const SceneData* s, const GdrHit* h
     r.offset[k] = r.base;
     if (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT) {
       r.state[k] = GBDPT_OFFSET_SHARED;
-      r.offset[k] = gbdpt_vertex(h->primID, h->u, h->v, wo_off[k], thr, o[k].dvcm, o[k].dvc, depth);
+      r.offset[k] = gbdpt_vertex(h->primID, h->u, h->v, wo_off[k], thr, &o[k].mis, depth);
     } else if (o[k].mode == GPT_MODE_TRACE) {
       Bsdf bo = surface_bsdf(s, &so[k]);
       r.state[k] = diffuse && is_diffuse(&bo, threshold) ? GBDPT_OFFSET_OWN : GBDPT_OFFSET_GLOSSY;
-      r.offset[k] = gbdpt_vertex(o[k].prim, o[k].b1, o[k].b2, wo_off[k], thr, o[k].dvcm, o[k].dvc, depth);
+      r.offset[k] = gbdpt_vertex(o[k].prim, o[k].b1, o[k].b2, wo_off[k], thr, &o[k].mis, depth);
     }
+    r.all_dvcm[1 + k] = o[k].mis.all_dvcm;
+    r.all_dvc[1 + k] = o[k].mis.all_dvc;
   }
   return r;
 }

@@ -35,6 +35,7 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
   if (!bidir_connection_ends(&ez, &rec.base, &ey, &y, &o, &cx)) return;
   atomic_inc(&counters[GPT_COUNTER_CONNECTIONS]);
   int y_diffuse = is_diffuse(&ey.b, params.shift_threshold);
+  float2 ox = (float2)(cx.others, gbdpt_connection_all_others(&cx, rec.all_dvcm[0], rec.all_dvc[0]));
 
   for (int i = 0; i < GPT_PEND_COUNT; ++i) pend[g * GPT_PEND_COUNT + i] = (float4)(0.0f);
   int base_ray_needed = 0;
@@ -54,8 +55,10 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
       ConnectionEnd eo = connection_end(&s, &rec.offset[k]);
       formed = bidir_connection_ends(&eo, &rec.offset[k], &ey, &y, &o, &cy);
     }
-    float w = gbdpt_weight(cx.others, cy.others, rec.ratio[k], formed);
-    float3 cb = checked(w * cx.value, nonfinite), co = checked(w * cy.value, nonfinite);
+    float2 oy = formed ? (float2)(cy.others, gbdpt_connection_all_others(&cy, rec.all_dvcm[1 + k], rec.all_dvc[1 + k]))
+                       : (float2)(0.0f);
+    float2 w = gbdpt_pair_weights(ox, oy, rec.ratio[k], formed);
+    float3 cb = checked(w.x * cx.value, nonfinite), co = checked(w.y * cy.value, nonfinite);
     pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
     base_ray_needed |= max3(cb) > 0.0f;
     if (!formed || !(max3(co) > 0.0f)) continue;

@@ -4,8 +4,9 @@
 // bidirectional kernels (bidir/bidir.cl, traced first). Built with GDR_GBDPT, G-PT's steps weigh
 // every strategy by G-BDPT's MIS (gbidir/weights.h), carry the bidirectional sums and record each
 // rough camera vertex; per bounce the host then runs gbdpt_connect once per stored light vertex.
-// Light tracing (t = 1) is not among its strategies.
+// Light tracing (t = 1) is not shifted: its splats join the layer kept out of the gradients.
 #include "gbidir/connect.h"
+#include "gbidir/light_tracing.h"
 #include "gpt/generate.h"
 #include "gpt/shade.h"
 #include "gpt/shift_step.h"

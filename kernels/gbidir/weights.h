@@ -7,10 +7,16 @@
 // same for both). Both f(x) and f(y) |J| are weighted by it. A shift that fails leaves the base
 // its bidirectional weight 1 / A.
 //
-// gbdpt leaves light tracing (t = 1) out of its strategies: its camera subpaths start with no
-// share for it (dvcm = 0), and its light subpaths do not connect to the camera.
+// Light tracing (t = 1) is not shifted: its connections to the camera splat into the layer kept
+// out of the gradients (with the direct emission) under bdpt's weight over every strategy,
+// w_lt(z) = p_lt(z) / sum_k p_k(z). The shifted strategies share the rest of each path: their sums
+// A and B leave light tracing out, and the weights of x and of y are scaled by 1 - w_lt of their
+// own path, (1 + others) / (1 + others with light tracing) (gbdpt_shifted_share). For every path
+// the weights of its base events, its offset events and its light tracing then sum to 1.
 #pragma once
+#include "bidir/connection.h"
 #include "bidir/subpath_mis.h"
+#include "camera/importance.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 
@@ -21,28 +27,75 @@ inline GdrBidirOptions gbdpt_options(void) {
   o.strategy_s = o.strategy_t = -1;
   o.radius = o.vm_normalization = o.vm_factor = o.vc_factor = 0.0f;
   o.multiplex = 0;
-  o.no_camera_connections = 1;
+  o.pad0 = 0;
   return o;
 }
 
-// others_x, others_y: the two paths' bidirectional "others" for the strategy; r: R; formed: the
-// offset exists (else the base's weight alone).
+// others_x, others_y: the two paths' bidirectional "others" for the strategy, light tracing left
+// out; r: R; formed: the offset exists (else the base's weight alone).
 inline float gbdpt_weight(float others_x, float others_y, float r, int formed) {
   float d = 1.0f + others_x + (formed ? r * (1.0f + others_y) : 0.0f);
   float w = 1.0f / d;
   return isfinite(d) && w > 0.0f ? w : 0.0f;
 }
 
+// 1 - w_lt of a path whose strategy has `others` without light tracing and `all_others` with it.
+inline float gbdpt_shifted_share(float others, float all_others) {
+  float share = (1.0f + others) / (1.0f + all_others);
+  return isfinite(share) && share > 0.0f ? fmin(share, 1.0f) : 0.0f;
+}
+
+// The weights of base and offset for a strategy whose "others" are ox of the base and oy of the
+// offset (x: light tracing left out, y: with it).
+inline float2 gbdpt_pair_weights(float2 ox, float2 oy, float r, int formed) {
+  float w = gbdpt_weight(ox.x, oy.x, r, formed);
+  return (float2)(w * gbdpt_shifted_share(ox.x, ox.y), w * gbdpt_shifted_share(oy.x, oy.y));
+}
+
+// The "others" of the strategies a camera subpath with sums m evaluates itself (bidir/subpath_mis.h):
+// emission found at a surface (s = 0), in the environment, and a light point connected (s = 1).
+inline float2 gbdpt_surface_emission_others(const SceneData* s, const Surface* su, float3 wo, const GbdptSums* m) {
+  return (float2)(mis_surface_emission_others(s, su, wo, m->dvcm, m->dvc, BIDIR_MIS_BALANCE),
+                  mis_surface_emission_others(s, su, wo, m->all_dvcm, m->all_dvc, BIDIR_MIS_BALANCE));
+}
+inline float2 gbdpt_escaped_emission_others(const SceneData* s, float3 dir, const GbdptSums* m) {
+  return (float2)(mis_escaped_emission_others(s, dir, m->dvcm, m->dvc, BIDIR_MIS_BALANCE),
+                  mis_escaped_emission_others(s, dir, m->all_dvcm, m->all_dvc, BIDIR_MIS_BALANCE));
+}
+inline float2 gbdpt_light_point_others(const SceneData* s, const Bsdf* b, float3 wo_l, float3 wi_l, float3 ng,
+                                       int light, const LightSample* ls, const GbdptSums* m) {
+  GdrBidirOptions o = gbdpt_options();
+  return (float2)(mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->dvcm, m->dvc, &o),
+                  mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->all_dvcm, m->all_dvc, &o));
+}
+
+// The "others" of connection c with light tracing's share, from the camera vertex's sums with it.
+inline float gbdpt_connection_all_others(const BidirConnection* c, float all_dvcm, float all_dvc) {
+  GdrBidirOptions o = gbdpt_options();
+  return c->w_light + mis_side(c->camera_pdf_area, all_dvcm, all_dvc, c->camera_pdf_rev, &o);
+}
+
+// The sums of a camera subpath leaving the camera along a direction at cos_theta to its axis.
+inline GbdptSums gbdpt_sums_start(const GdrCamera* cam, float cos_theta) {
+  GbdptSums m;
+  float pdf = camera_pdf_dir(cam, cos_theta);
+  m.dvcm = m.dvc = m.all_dvc = 0.0f;
+  m.all_dvcm = pdf > 0.0f ? 1.0f / pdf : 0.0f;  // mis_camera_start under the balance heuristic
+  return m;
+}
+
 // The camera subpath's sums reach its next vertex (dist away, arriving at cos_in) and scatter
 // there (pdf of the direction taken, delta lobe or not, pdf_rev back, leaving at cos_out).
-inline void gbdpt_sums_arrive(float dist, float cos_in, float* dvcm, float* dvc) {
+inline void gbdpt_sums_arrive(float dist, float cos_in, GbdptSums* m) {
   float dvm = 0.0f;
-  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, dvcm, dvc, &dvm);
+  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->dvcm, &m->dvc, &dvm);
+  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->all_dvcm, &m->all_dvc, &dvm);
 }
-inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, float* dvcm, float* dvc) {
+inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, GbdptSums* m) {
   GdrBidirOptions o = gbdpt_options();
   float dvm = 0.0f;
-  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, dvcm, dvc, &dvm);
+  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, &m->dvcm, &m->dvc, &dvm);
+  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, &m->all_dvcm, &m->all_dvc, &dvm);
 }
 
 // Whether a camera vertex of `depth` scatterings before it can still connect to a light

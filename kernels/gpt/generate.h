@@ -7,6 +7,7 @@
 #include "gradient/neighbours.h"
 #include "gradient/offsets.h"
 #include "camera/importance.h"
+#include "gbidir/weights.h"
 #include "path/camera_sample.h"
 #include "path/path_state.h"
 #include "path/shadow.h"
@@ -31,7 +32,9 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   GptBaseState b;
   b.path = path_start(pixel, params.path.sample);
   b.rr_prob = 1.0f;
-  b.dvcm = b.dvc = 0.0f;  // G-BDPT: no share for light tracing (gbidir/weights.h)
+#if defined(GDR_GBDPT)
+  b.mis = gbdpt_sums_start(&cam, camera_cos_theta(&cam, r.d));
+#endif
   bases[g] = b;
 #if defined(GDR_MANIFOLD)
   chains[g].open = 0;
@@ -41,12 +44,14 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     GptOffsetState os;
     os.throughput[0] = os.throughput[1] = os.throughput[2] = 1.0f;
     os.ratio = 1.0f;
+#if defined(GDR_GBDPT)
+    os.mis = b.mis;  // its own from its camera ray below
+#endif
     vstore3(r.o, 0, os.prev_pos);
     os.last_pdf = 1.0f;
     os.last_delta = 0;
     os.visible = 0;
     os.glossy_next_only = 0;  // the pixel shift holds wherever the offset lands
-    os.dvcm = os.dvc = 0.0f;
     int nx = px + OFFSET_PIXEL_DX(k), ny = py + OFFSET_PIXEL_DY(k);
     // The pixel shift keeps the film offset: its Jacobian is 1, and the two pixels' film
     // densities differ only near the image's edges, where the filter is cut (camera_shift_ratio).
@@ -66,6 +71,9 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
       os.throughput[0] = os.throughput[1] = os.throughput[2] = q;
       os.ratio = q;
       vstore3(ro.d, 0, os.dir);
+#if defined(GDR_GBDPT)
+      os.mis = gbdpt_sums_start(&cam, camera_cos_theta(&cam, ro.d));
+#endif
       uint slot = atomic_inc(&counters[GPT_COUNTER_OFFSET_RAYS]);
       write_camera_ray(&offset_rays[slot], &ro, g * GPT_OFFSETS + (uint)k);
     }

@@ -16,10 +16,8 @@
 #include "shared/gbidir_types.h"
 #include "shift/joined.h"
 #include "shift/policy.h"
-#if defined(GDR_GBDPT)
 #include "gbidir/camera_vertex.h"
 #include "gbidir/weights.h"
-#endif
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
 // and the offset's le_off (with q_off, the offset's own light-sampling pdf for that emitter),
@@ -36,12 +34,12 @@ inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const Gpt
   acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(c_off, nonfinite));
 }
 
-// The pair (base, offset k) of one strategy under one weight w (G-BDPT's MIS): the base's c_base
-// and the offset's c_off (f(y) |J| / p(x)).
-inline void add_pair(__global float4* acc, uint pixel, int k, float w, float3 c_base, float3 c_off,
+// The pair (base, offset k) of one strategy under G-BDPT's weights w (base, offset): the base's
+// c_base and the offset's c_off (f(y) |J| / p(x)).
+inline void add_pair(__global float4* acc, uint pixel, int k, float2 w, float3 c_base, float3 c_off,
                      __global uint* nonfinite) {
-  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w * c_base, nonfinite));
-  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w * c_off, nonfinite));
+  acc_add(acc, pixel, GPT_ACC_BASE(k), checked(w.x * c_base, nonfinite));
+  acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w.y * c_off, nonfinite));
 }
 
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
@@ -87,7 +85,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
         acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
       } else {
 #if defined(GDR_GBDPT)
-        float others_x = mis_escaped_emission_others(&s, dir, base.dvcm, base.dvc, BIDIR_MIS_BALANCE);
+        float2 others_x = gbdpt_escaped_emission_others(&s, dir, &base.mis);
 #else
         float p_light = last_specular ? 0.0f : escaped_light_pdf(&s, dir);
 #endif
@@ -96,9 +94,10 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
           float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
 #if defined(GDR_GBDPT)
           int alive = offset_alive(&o[k]);
-          float others_y = alive ? mis_escaped_emission_others(&s, d_off, o[k].dvcm, o[k].dvc, BIDIR_MIS_BALANCE) : 0.0f;
+          float2 others_y = alive ? gbdpt_escaped_emission_others(&s, d_off, &o[k].mis) : (float2)(0.0f);
           float3 c_off = alive ? vload3(0, o[k].throughput) * escaped_radiance(&s, d_off) : (float3)(0.0f);
-          add_pair(acc, st->pixel, k, gbdpt_weight(others_x, others_y, o[k].ratio, alive), beta * le, c_off, nonfinite);
+          add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
+                   nonfinite);
 #else
           float q_off = o[k].last_delta ? 0.0f : escaped_light_pdf(&s, d_off);
           add_bsdf_emission(acc, st->pixel, k, &o[k], p_bsdf, p_light, beta * le, escaped_radiance(&s, d_off), q_off,
@@ -138,9 +137,9 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   }
 #if defined(GDR_GBDPT)
   // The bidirectional sums arrive at the paths' vertices.
-  gbdpt_sums_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), &base.dvcm, &base.dvc);
+  gbdpt_sums_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), &base.mis);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    if (offset_alive(&o[k])) gbdpt_sums_arrive(dist_off[k], fabs(dot(so[k].ng, wo_off[k])), &o[k].dvcm, &o[k].dvc);
+    if (offset_alive(&o[k])) gbdpt_sums_arrive(dist_off[k], fabs(dot(so[k].ng, wo_off[k])), &o[k].mis);
   }
 #endif
 
@@ -152,16 +151,17 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
     } else {
 #if defined(GDR_GBDPT)
-      float others_x = mis_surface_emission_others(&s, &su, wo, base.dvcm, base.dvc, BIDIR_MIS_BALANCE);
+      float2 others_x = gbdpt_surface_emission_others(&s, &su, wo, &base.mis);
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         int alive = offset_alive(&o[k]);
         float3 c_off = (float3)(0.0f);
-        float others_y = 0.0f;
+        float2 others_y = (float2)(0.0f);
         if (alive && so[k].light >= 0) {
           c_off = vload3(0, o[k].throughput) * surface_radiance(&s, &so[k], wo_off[k]);
-          others_y = mis_surface_emission_others(&s, &so[k], wo_off[k], o[k].dvcm, o[k].dvc, BIDIR_MIS_BALANCE);
+          others_y = gbdpt_surface_emission_others(&s, &so[k], wo_off[k], &o[k].mis);
         }
-        add_pair(acc, st->pixel, k, gbdpt_weight(others_x, others_y, o[k].ratio, alive), beta * le, c_off, nonfinite);
+        add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
+                 nonfinite);
       }
 #else
       float p_light = (last_specular || su.light < 0) ? 0.0f : surface_light_pdf(&s, &su, rh.ray.tfar, wo);
@@ -200,8 +200,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
     float3 c_base = beta * f_le;
 #if defined(GDR_GBDPT)
-    GdrBidirOptions gopts = gbdpt_options();
-    float others_x = mis_light_point_others(&s, &b, wo_l, wi_l, su.ng, light, &ls, base.dvcm, base.dvc, &gopts);
+    float2 others_x = gbdpt_light_point_others(&s, &b, wo_l, wi_l, su.ng, light, &ls, &base.mis);
 #else
     float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
 #endif
@@ -237,8 +236,9 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       }
       float r = formed ? o[k].ratio : 0.0f;
 #if defined(GDR_GBDPT)
-      float others_y = formed ? mis_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, o[k].dvcm, o[k].dvc, &gopts) : 0.0f;
-      float w_base = gbdpt_weight(others_x, others_y, r, formed), w_off = w_base;
+      float2 others_y = formed ? gbdpt_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, &o[k].mis) : (float2)(0.0f);
+      float2 w = gbdpt_pair_weights(others_x, others_y, r, formed);
+      float w_base = w.x, w_off = w.y;
 #else
       float q_b = (!formed || lo.delta) ? 0.0f : bsdf_pdf(&bo, wol, wil);
       float w_base = gpt_weight(p_light, p_b, r), w_off = gpt_weight(lo.pdf, q_b, r);
@@ -296,14 +296,13 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       offset_keep(&o[k], &pre);
 #if defined(GDR_GBDPT)
       float3 wr = o[k].mode == GPT_MODE_JOINED_RECENT ? frame_to_local(&frame, wo_off[k]) : wo_l;
-      gbdpt_sums_scatter(o[k].last_delta, o[k].last_pdf, bsdf_pdf(&b, bs.wi, wr), fabs(dot(su.ng, wi)), &o[k].dvcm,
-                         &o[k].dvc);
+      gbdpt_sums_scatter(o[k].last_delta, o[k].last_pdf, bsdf_pdf(&b, bs.wi, wr), fabs(dot(su.ng, wi)), &o[k].mis);
 #endif
       o[k].mode = GPT_MODE_JOINED;
     }
   }
 #if defined(GDR_GBDPT)
-  gbdpt_sums_scatter(bs.delta, bs.pdf, bsdf_pdf(&b, bs.wi, wo_l), fabs(dot(su.ng, wi)), &base.dvcm, &base.dvc);
+  gbdpt_sums_scatter(bs.delta, bs.pdf, bsdf_pdf(&b, bs.wi, wo_l), fabs(dot(su.ng, wi)), &base.mis);
 #endif
   for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
 

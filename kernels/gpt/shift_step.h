@@ -10,9 +10,7 @@
 #if defined(GDR_MANIFOLD)
 #include "gpt/manifold_step.h"
 #endif
-#if defined(GDR_GBDPT)
 #include "gbidir/weights.h"
-#endif
 
 // The base's next vertex x_{k+1} is known: every traced offset shifts its outgoing direction.
 __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHit* base_rays,
@@ -81,7 +79,7 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     offset_keep(&o, &pre);
 #if defined(GDR_GBDPT)
     gbdpt_sums_scatter(o.last_delta, o.last_pdf, bsdf_pdf(&y.b, frame_to_local(&y.frame, wiy_w), y.wo),
-                       fabs(dot(y.su.ng, wiy_w)), &o.dvcm, &o.dvc);
+                       fabs(dot(y.su.ng, wiy_w)), &o.mis);
 #endif
     o.glossy_next_only = glossy_next_only;
     vstore3(y.su.p, 0, o.prev_pos);

@@ -23,7 +23,7 @@ typedef struct GdrBidirOptions {
   float vm_factor;         // MIS weight factor of merging against connections (0 without merging)
   float vc_factor;         // of connections against merging (0 without connections)
   int multiplex;           // 1: each path picks its length and one strategy from its numbers (bidir/strategies.h)
-  int no_camera_connections;  // 1: light vertices are not connected to the camera (gbdpt: no t = 1)
+  int pad0;
 } GdrBidirOptions;
 
 // bdpt_connect's vertex index that stands for the path's own (multiplexed) strategy's vertex.

@@ -14,10 +14,13 @@
 
 // A rough camera vertex of a group, written by the shade step for the connections to the light
 // subpath's stored vertices: the base's vertex and each offset's, with its throughput
-// (f(y) |J| / p(x)), its pdf ratio to the base (p(y) |J| / p(x)) and its own MIS sums.
+// (f(y) |J| / p(x)), its pdf ratio to the base (p(y) |J| / p(x)) and its own MIS sums (the
+// vertices' without light tracing's share, all_dvcm and all_dvc with it: index 0 the base's, 1 + k
+// offset k's).
 typedef struct GbdptCameraVertex {
   GdrBidirVertex base;
   GdrBidirVertex offset[GPT_OFFSETS];
+  float all_dvcm[1 + GPT_OFFSETS], all_dvc[1 + GPT_OFFSETS];
   float ratio[GPT_OFFSETS];
   int state[GPT_OFFSETS];  // GBDPT_OFFSET_*
 } GbdptCameraVertex;

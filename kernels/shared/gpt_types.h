@@ -21,8 +21,7 @@ typedef struct GptBaseState {
   float wo[3];          // direction from x_k toward the previous vertex (world)
   float sample_eta;     // relative IOR across x_k (wi side / wo side)
   float rr_prob;        // Russian-roulette survival probability applied at x_k (1: none)
-  float dvcm, dvc;      // G-BDPT: the camera subpath's bidirectional MIS sums (bidir/subpath_mis.h)
-  float pad0;
+  GbdptSums mis;        // G-BDPT: the camera subpath's bidirectional MIS sums
 } GptBaseState;
 
 typedef struct GdrGptParams {

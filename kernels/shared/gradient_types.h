@@ -9,6 +9,14 @@
 #define GPT_DIR_PY 2
 #define GPT_DIR_NY 3
 
+// G-BDPT's running MIS sums of a camera subpath (bidir/subpath_mis.h), twice: without light
+// tracing's share (the strategies whose gradients are shifted, weighed among themselves), and with
+// it (every strategy; gbidir/weights.h).
+typedef struct GbdptSums {
+  float dvcm, dvc;
+  float all_dvcm, all_dvc;
+} GbdptSums;
+
 // What an offset path is doing.
 #define GPT_MODE_DEAD 0          // the shift failed: contributes nothing, the base takes full weight
 #define GPT_MODE_TRACE 1         // follows its own rays; its current vertex is its own hit
@@ -31,6 +39,5 @@ typedef struct GptOffsetState {
   int visible;          // RECONNECTING: the reconnection segment was unoccluded
   int last_delta;       // the ray to the current vertex left a delta lobe
   int glossy_next_only; // TRACE: the shift holds only if the current vertex is glossy
-  float dvcm, dvc;      // G-BDPT: the offset's own bidirectional MIS sums (bidir/subpath_mis.h)
-  int pad0;
+  GbdptSums mis;        // G-BDPT: the offset's own bidirectional MIS sums
 } GptOffsetState;

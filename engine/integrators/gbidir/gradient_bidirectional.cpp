@@ -7,9 +7,9 @@
 namespace gdr {
 namespace {
 
-// The light subpaths' options: bdpt's store, the balance heuristic, no connections to the camera.
+// The light subpaths' options: bdpt's store and connections to the camera, the balance heuristic.
 GdrBidirOptions light_options() {
-  GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 1};
+  GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
   return o;
 }
 
@@ -31,19 +31,28 @@ GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSe
                                              const IntegratorParams& params)
     : GradientPathTracer(in, gpt, params, true),
       subpaths_(in, BIDIR_BDPT, groups_.capacity()),
-      splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()) {}
+      splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()),
+      light_tracing_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height),
+      add_light_tracing_(groups_.kernels().make(groups_.program(), "gbdpt_add_light_tracing")) {
+  light_tracing_.fill(Vec4{});
+}
 
 void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
                                         uint32_t count) {
   GdrGptParams p = groups_.params(settings, sample, first, count);
   p.path.max_depth = bdpt_segments(settings.max_depth);
   const bool light = light_subpaths_allowed(settings.max_depth) && p.path.light_count > 0;
-  if (light) subpaths_.trace_light(p.path, light_options(), BidirSink{groups_.acc(), splats_});
+  if (light) subpaths_.trace_light(p.path, light_options(), BidirSink{groups_.acc(), splats_, &light_tracing_});
   const GroupLightSubpaths subpaths{subpaths_.light_paths(), subpaths_.store(), cl_uint(subpaths_.capacity()),
                                     subpaths_.stored_bound()};
   groups_.trace(p, PrimarySamples(), aux(), light ? &subpaths : nullptr);
   groups_.report(in_.context.stats());
   subpaths_.report(in_.context.stats());
+}
+
+void GradientBidirectional::end_pass() {
+  const cl_uint pixels = cl_uint(light_tracing_.size());
+  add_light_tracing_.args(pixels, light_tracing_, groups_.acc()).run(pixels);
 }
 
 RenderResult GradientBidirectional::render(const RenderSettings& settings) {

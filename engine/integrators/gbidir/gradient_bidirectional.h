@@ -8,13 +8,15 @@
 // a vertex of its own reconnects to the same light vertex, where both camera vertices and the light
 // vertex are diffuse (else that connection's shift fails, counted in
 // shift_failures/glossy_connection). Base and offset of a strategy share the balance heuristic
-// over all strategies of both paths (kernels/gbidir/weights.h); the primal is the sum of the base
-// paths' shares, as G-PT's. Outputs and reconstruction are G-PT's.
+// over those strategies of both paths (kernels/gbidir/weights.h); the primal is the sum of the base
+// paths' shares, as G-PT's. Light tracing (t = 1) is not shifted: the light subpaths' connections
+// to the camera, under bdpt's weight over every strategy, are splatted into the layer kept out of
+// the gradients (`direct`, beside the emission the camera sees directly), and the shifted
+// strategies' weights leave each path light tracing's share. Outputs and reconstruction are G-PT's.
 //
-// Left out: light tracing (t = 1) is none of its strategies (the camera subpaths' sums give it no
-// share, so the weights still sum to one over the others); paths only light tracing reaches, such
-// as a point light's caustic seen directly, are missing. The manifold shift is refused: its
-// offsets would need their bidirectional sums through the walk's vertices.
+// Left out: the manifold shift is refused (its offsets would need their bidirectional sums through
+// the walk's vertices); light tracing's paths get no gradients (the paper shifts them from their
+// splat pixel).
 //
 // Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux
 // as gpt's; recon, recon_solver, alpha: the reconstruction (render/gradient_images.h). Paths are
@@ -37,9 +39,12 @@ class GradientBidirectional : public GradientPathTracer {
 
  private:
   void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) override;
+  void end_pass() override;
 
   BidirSubpaths subpaths_;  // the light subpaths, one a group
-  SplatFilm splats_;        // the light subpaths' camera connections' slots (none: t = 1 is left out)
+  SplatFilm splats_;        // their connections to the camera (t = 1)
+  Buffer<Vec4> light_tracing_;  // and the pass's sum of them, a pixel
+  Kernel add_light_tracing_;
 };
 
 }  // namespace gdr

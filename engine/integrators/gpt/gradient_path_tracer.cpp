@@ -47,6 +47,7 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
     for_each_chunk(pixels, groups_.capacity(), [&](uint32_t first, uint32_t count) {
       trace_chunk(settings, uint32_t(sample), first, count);
     });
+    end_pass();
     gather_.args(w, h, groups_.acc(), film_.pass(sample)).run(pixels);
   });
   const double seconds = timer.elapsed();

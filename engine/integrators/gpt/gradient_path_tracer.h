@@ -40,6 +40,8 @@ class GradientPathTracer : public Integrator {
                      bool connecting);
   // The groups of pixels [first, first + count) in pass `sample`, their sums into groups_.acc().
   virtual void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
+  // After a pass's chunks, before its sums are gathered into the film.
+  virtual void end_pass() {}
   AuxLayers* aux() { return aux_ ? &*aux_ : nullptr; }
 
   RenderInputs in_;
