@@ -1,6 +1,6 @@
 // G-BDPT's MIS (Manzi et al. 2015, "Gradient-Domain Bidirectional Path Tracing"): a strategy st of
-// base path x and its offset y = T(x) share one weight, the balance heuristic over every strategy
-// of both paths,
+// base path x and its offset y = T(x) share one weight, the balance heuristic over the shifted
+// strategies (all but light tracing, below) of both paths,
 //   w_st(x) = p_st(x) / sum_k [p_k(x) + p_k(y) |J|] = 1 / (A + R B),
 // with A = sum_k p_k(x) / p_st(x) (1 + the bidirectional sums' "others" of x), B the same of y,
 // and R = p_st(y) |J| / p_st(x): the shifted camera prefix's pdf ratio (the light subpath is the
