@@ -124,19 +124,19 @@ TEST(Registry, CommandLineListsAndChecksIntegrators) {
 // element's file and line; with --strict it is an error.
 TEST(Registry, UnknownSceneIntegratorIsAWarningOrAnError) {
   test::TempDir dir;
-  std::ofstream(dir.file("gbdpt.xml")) << R"(<scene version="3.0.0">
-  <integrator type="gbdpt"/>
+  std::ofstream(dir.file("volpath.xml")) << R"(<scene version="3.0.0">
+  <integrator type="volpath"/>
   <shape type="sphere"><emitter type="area"><rgb name="radiance" value="1"/></emitter></shape>
   <sensor type="perspective"><film type="hdrfilm"><integer name="width" value="4"/><integer name="height" value="4"/></film></sensor>
 </scene>)";
-  test::CliResult r = test::run_gdrender("gbdpt.xml --spp 1 -o out.exr", dir);
+  test::CliResult r = test::run_gdrender("volpath.xml --spp 1 -o out.exr", dir);
   ASSERT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("gbdpt.xml:2"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("gbdpt"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("volpath.xml:2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("volpath"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("rendering with pt"), std::string::npos) << r.output;
-  test::CliResult strict = test::run_gdrender("gbdpt.xml --spp 1 --strict -o strict.exr", dir);
+  test::CliResult strict = test::run_gdrender("volpath.xml --spp 1 --strict -o strict.exr", dir);
   EXPECT_NE(strict.code, 0) << strict.output;
-  EXPECT_NE(strict.output.find("gbdpt.xml:2"), std::string::npos) << strict.output;
+  EXPECT_NE(strict.output.find("volpath.xml:2"), std::string::npos) << strict.output;
   EXPECT_FALSE(std::filesystem::exists(dir.file("strict.exr")));
 }
 
