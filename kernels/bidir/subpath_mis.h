@@ -39,10 +39,16 @@ inline void mis_light_start(const SceneData* s, const EmissionSample* e, const G
   st->flags = infinite ? BIDIR_PATH_INFINITE : 0;
 }
 
+// A camera subpath's dvcm as it leaves the camera along a direction at cos_theta to the view axis
+// (light tracing's share; dvc starts at 0).
+inline float mis_camera_dvcm(const GdrCamera* cam, float cos_theta, int mis) {
+  float pdf = camera_pdf_dir(cam, cos_theta);
+  return pdf > 0.0f ? mis_power_of(1.0f / pdf, mis) : 0.0f;
+}
+
 // A camera subpath leaves the camera along a direction at cos_theta to the view axis.
 inline void mis_camera_start(const GdrCamera* cam, float cos_theta, int mis, GdrBidirPathState* st) {
-  float pdf = camera_pdf_dir(cam, cos_theta);
-  st->dvcm = pdf > 0.0f ? mis_power_of(1.0f / pdf, mis) : 0.0f;
+  st->dvcm = mis_camera_dvcm(cam, cos_theta, mis);
   st->dvc = 0.0f;
   st->dvm = 0.0f;
   st->flags = BIDIR_PATH_ALL_SPECULAR;
@@ -118,9 +124,6 @@ inline float mis_weight(float others) {
 // share, relative to this one's.
 inline float mis_emission_others(float direct, float emission, float dvcm, float dvc, int mis) {
   return mis_power_of(direct, mis) * dvcm + mis_power_of(emission, mis) * dvc;
-}
-inline float mis_emission_weight(float direct, float emission, const GdrBidirPathState* st, int mis) {
-  return mis_weight(mis_emission_others(direct, emission, st->dvcm, st->dvc, mis));
 }
 
 // The emission pdfs of a camera subpath's vertex su, seen along wo (toward the subpath), as the

@@ -7,6 +7,10 @@
 #include "shared/gpt_types.h"
 #include "shift/policy.h"
 
+// Whether a camera vertex of `depth` scatterings before it can still connect to a light
+// subpath's vertex (one more segment each side at least; max_depth in segments, < 0: unbounded).
+inline int gbdpt_connects_at(int depth, int max_depth) { return max_depth < 0 || depth + 3 <= max_depth; }
+
 inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float3 throughput, const GbdptSums* m,
                                    int depth) {
   GdrBidirVertex x;

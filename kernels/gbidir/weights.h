@@ -16,7 +16,6 @@
 #pragma once
 #include "bidir/connection.h"
 #include "bidir/subpath_mis.h"
-#include "camera/importance.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 
@@ -78,9 +77,8 @@ inline float gbdpt_connection_all_others(const BidirConnection* c, float all_dvc
 // The sums of a camera subpath leaving the camera along a direction at cos_theta to its axis.
 inline GbdptSums gbdpt_sums_start(const GdrCamera* cam, float cos_theta) {
   GbdptSums m;
-  float pdf = camera_pdf_dir(cam, cos_theta);
   m.dvcm = m.dvc = m.all_dvc = 0.0f;
-  m.all_dvcm = pdf > 0.0f ? 1.0f / pdf : 0.0f;  // mis_camera_start under the balance heuristic
+  m.all_dvcm = mis_camera_dvcm(cam, cos_theta, BIDIR_MIS_BALANCE);
   return m;
 }
 
@@ -97,7 +95,3 @@ inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_ou
   mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, &m->dvcm, &m->dvc, &dvm);
   mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, &m->all_dvcm, &m->all_dvc, &dvm);
 }
-
-// Whether a camera vertex of `depth` scatterings before it can still connect to a light
-// subpath's vertex (one more segment each side at least; max_depth in segments, < 0: unbounded).
-inline int gbdpt_connects_at(int depth, int max_depth) { return max_depth < 0 || depth + 3 <= max_depth; }

@@ -155,20 +155,21 @@ void BidirSubpaths::trace_camera_subpaths(const GdrPtParams& p, const BidirSink&
   }
 }
 
-void BidirSubpaths::trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink) {
+void BidirSubpaths::begin(const GdrBidirOptions& o, const PrimarySamples& primary) {
   options_ = o;
-  primary_ = PrimarySamples();
+  primary_ = primary;
   stored_bound_ = 0;
   stored_ = 0;
+}
+
+void BidirSubpaths::trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink) {
+  begin(o, PrimarySamples());
   trace_light_subpaths(p, sink);
 }
 
 void BidirSubpaths::trace(const GdrPtParams& p, const GdrBidirOptions& o, bool light, const PrimarySamples& primary,
                           const BidirSink& sink, AuxLayers* aux) {
-  options_ = o;
-  primary_ = primary;
-  stored_bound_ = 0;
-  stored_ = 0;
+  begin(o, primary);
   if (!lt()) {
     if (light) trace_light_subpaths(p, sink);
     if (merges() && stored_ > 0) build_grid(p);

@@ -65,6 +65,8 @@ class BidirSubpaths {
   bool lt() const { return technique_ == BIDIR_LT; }
   bool connects() const { return technique_ == BIDIR_BDPT || technique_ == BIDIR_VCM; }
   bool merges() const { return technique_ == BIDIR_PM || technique_ == BIDIR_VCM; }
+  // A batch's options and primary samples; its store starts empty.
+  void begin(const GdrBidirOptions& o, const PrimarySamples& primary);
   void trace_light_subpaths(const GdrPtParams& p, const BidirSink& sink);
   void trace_direct(const GdrPtParams& p, const BidirSink& sink, AuxLayers* aux);
   void trace_camera_subpaths(const GdrPtParams& p, const BidirSink& sink, AuxLayers* aux);

@@ -7,7 +7,8 @@
 namespace gdr {
 namespace {
 
-// The light subpaths' options: bdpt's store and connections to the camera, the balance heuristic.
+// The light subpaths' options: bdpt's store and connections to the camera, the balance heuristic
+// (the options the kernels weigh the camera subpaths by: gbidir/weights.h, gbdpt_options).
 GdrBidirOptions light_options() {
   GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
   return o;
