@@ -4,6 +4,7 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_bidirectional.h"
+#include "integrators/gbidir/gradient_photon_mapping.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "integrators/mlt/gradient_metropolis.h"
 #include "integrators/mlt/metropolis.h"
@@ -36,6 +37,12 @@ std::vector<IntegratorEntry> make_registry() {
        true, join(kGbdptParams, kReconParams), {"gbdpt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<GradientBidirectional>(in, gbdpt_settings(p), p);
+       }},
+      {"gpm", "gradient-domain photon mapping (Hua et al. 2017): G-PT's shifted camera subpaths to their visible "
+              "points, photons shifted there from their parents, the radius shrinking by pass, Poisson reconstruction",
+       true, join(kGpmParams, kReconParams), {"gpm"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<GradientPhotonMapping>(in, gpm_settings(p), p);
        }},
       {"lt", "light tracer: light subpaths connected to the camera and splatted, emission seen directly by camera rays",
        false, kLtParams, {"ptracer", "lt"},

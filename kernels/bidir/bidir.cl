@@ -29,7 +29,7 @@
 #include "path/nee.h"
 #include "path/splat.h"
 #include "bidir/connection.h"
-#include "bidir/hash_grid.h"
+#include "bidir/photon_query.h"
 #include "bidir/strategies.h"
 #include "bidir/subpath_mis.h"
 #include "shared/bidir_types.h"
@@ -113,15 +113,17 @@ __kernel void lt_direct(GdrPtParams params, uint count, __global const GdrRayHit
 }
 
 // Light subpaths [first_pixel, first_pixel + pixel_count) of the pass leave their lights: the
-// emission sample, the first throughput and MIS sums, and the ray into queue 0 (compacted).
+// emission sample, the first throughput and MIS sums, where each left (origins), and the ray into
+// queue 0 (compacted).
 __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrRayHit* rays, __global uint* queue,
-                         __global GdrBidirPathState* paths, __global uint* counters, PRIMARY_SAMPLE_ARGS,
-                         SCENE_DATA_ARGS) {
+                         __global GdrBidirPathState* paths, __global GdrLightOrigin* origins, __global uint* counters,
+                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
   if (i >= params.pixel_count) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   uint index = params.first_pixel + i;
   paths[i].stored = 0;
+  origins[i].light = -1;
   PathSampler ps = path_sampler_bound(params.seed, index, params.sample, PRIMARY_SAMPLE_NAMES);
   // Strategies with s < 2 take no light subpath (s = 1 samples its light point from the camera).
   int2 shown = bidir_path_strategy(&opts, &ps, params.max_depth);
@@ -142,6 +144,12 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
   bidir_set_strategy(&st, shown);
   mis_light_start(&s, &e, &opts, &st);
   paths[i] = st;
+  GdrLightOrigin origin;
+  vstore3(e.p, 0, origin.p);
+  vstore3(e.n, 0, origin.n);
+  origin.light = e.light;
+  origin.pad0 = 0;
+  origins[i] = origin;
   uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
   queue[k] = i;
   // Area lights: off the emitting surface; the other lights' points lie on no surface.
@@ -422,34 +430,24 @@ __kernel void vcm_merge(GdrPtParams params, GdrBidirOptions opts, uint count, ui
   Bsdf bz = surface_bsdf(&s, &sz);
   Frame fz = frame_from_normal(sz.ns);
   float3 wo_z = vload3(0, z.wo), wo_z_local = frame_to_local(&fz, wo_z);
-  float r2 = opts.radius * opts.radius;
-  uint cells[8];
-  int ncells = hash_grid_query_cells(sz.p, opts.radius, buckets, cells);
+  PhotonQuery pq = photon_query(sz.p, opts.radius, buckets);
   float3 sum = (float3)(0.0f);
-  uint merged = 0;
-  for (int c = 0; c < ncells; ++c) {
-    for (uint i = starts[cells[c]], end = starts[cells[c] + 1]; i < end; ++i) {
-      uint e = sorted[i];
-      float3 d = store_points[e].xyz - sz.p;
-      if (dot(d, d) > r2) continue;
-      GdrBidirVertex y = store[e];
-      if (!segments_allowed(params.max_depth, y.depth + z.depth)) continue;
-      // The light arrives along the light vertex's incoming direction; the density estimate
-      // counts flux per area, so the BSDF's cosine gives way to the geometric one.
-      float3 wi = vload3(0, y.wo), wi_local = frame_to_local(&fz, wi);
-      float cos_g = fabs(dot(sz.ng, wi));
-      if (!sides_agree(wi, sz.ng, wi_local.z) || !(cos_g > 0.0f)) continue;
-      float3 f = bsdf_eval(&bz, wo_z_local, wi_local) / cos_g;
-      if (!(max3(f) > 0.0f)) continue;
-      float w = 1.0f;
-      if (opts.technique == BIDIR_VCM) {
-        float pdf_fwd = bsdf_pdf(&bz, wo_z_local, wi_local), pdf_rev = bsdf_pdf(&bz, wi_local, wo_z_local);
-        w = bidir_weight(&opts, mis_weight(mis_merge_side(y.dvcm, y.dvm, pdf_fwd, &opts) +
-                                           mis_merge_side(z.dvcm, z.dvm, pdf_rev, &opts)));
-      }
-      sum += f * vload3(0, y.throughput) * w;
-      ++merged;
+  uint merged = 0, e;
+  while (photon_query_next(&pq, starts, sorted, store_points, &e)) {
+    GdrBidirVertex y = store[e];
+    if (!segments_allowed(params.max_depth, y.depth + z.depth)) continue;
+    float3 wi = vload3(0, y.wo);
+    float3 f = photon_merge_value(&bz, &fz, sz.ng, wo_z_local, wi);
+    if (!(max3(f) > 0.0f)) continue;
+    float w = 1.0f;
+    if (opts.technique == BIDIR_VCM) {
+      float3 wi_local = frame_to_local(&fz, wi);
+      float pdf_fwd = bsdf_pdf(&bz, wo_z_local, wi_local), pdf_rev = bsdf_pdf(&bz, wi_local, wo_z_local);
+      w = bidir_weight(&opts, mis_weight(mis_merge_side(y.dvcm, y.dvm, pdf_fwd, &opts) +
+                                         mis_merge_side(z.dvcm, z.dvm, pdf_rev, &opts)));
     }
+    sum += f * vload3(0, y.throughput) * w;
+    ++merged;
   }
   if (merged == 0) return;
   atomic_add(&counters[BIDIR_COUNTER_MERGES], merged);

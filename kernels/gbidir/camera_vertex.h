@@ -10,6 +10,9 @@
 // Whether a camera vertex of `depth` scatterings before it can still connect to a light
 // subpath's vertex (one more segment each side at least; max_depth in segments, < 0: unbounded).
 inline int gbdpt_connects_at(int depth, int max_depth) { return max_depth < 0 || depth + 3 <= max_depth; }
+// Whether a visible point of `depth` scatterings before it can merge with a photon (one more
+// segment from the light at least).
+inline int gpm_merges_at(int depth, int max_depth) { return max_depth < 0 || depth + 2 <= max_depth; }
 
 inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float3 throughput, const GbdptSums* m,
                                    int depth) {

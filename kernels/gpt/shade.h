@@ -2,7 +2,9 @@
 // pairwise MIS weights, then the base's BSDF sample (offsets that share its vertex follow).
 // Built for G-BDPT (GDR_GBDPT), the same step weighs by G-BDPT's MIS (gbidir/weights.h), carries
 // the paths' bidirectional sums and records each rough vertex for the connections to the light
-// subpath (gbidir/connect.h).
+// subpath (gbidir/connect.h). Built for G-PM (GDR_GPM), it is a photon mapper's camera subpath:
+// no next-event estimation, emission only through delta vertices (under the pair weight alone),
+// and the group ends at the base's first rough vertex, recorded for the merges (gbidir/merge.h).
 #pragma once
 #include "gradient/accumulators.h"
 #include "gradient/offsets.h"
@@ -18,6 +20,15 @@
 #include "shift/policy.h"
 #include "gbidir/camera_vertex.h"
 #include "gbidir/weights.h"
+
+// The "others" of the strategy that found emission, of the base (x) and of the offset (y): G-BDPT's
+// from the bidirectional sums; G-PM's subpaths see emission through delta vertices only, by one
+// strategy, so none.
+#if defined(GDR_GPM)
+#define GPT_EMISSION_OTHERS(what, ...) ((float2)(0.0f))
+#else
+#define GPT_EMISSION_OTHERS(what, ...) gbdpt_##what##_emission_others(__VA_ARGS__)
+#endif
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
 // and the offset's le_off (with q_off, the offset's own light-sampling pdf for that emitter),
@@ -84,17 +95,17 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       if (direct) {
         acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
       } else {
-#if defined(GDR_GBDPT)
-        float2 others_x = gbdpt_escaped_emission_others(&s, dir, &base.mis);
+#if defined(GDR_GBDPT) || defined(GDR_GPM)
+        float2 others_x = GPT_EMISSION_OTHERS(escaped, &s, dir, &base.mis);
 #else
         float p_light = last_specular ? 0.0f : escaped_light_pdf(&s, dir);
 #endif
         for (int k = 0; k < GPT_OFFSETS; ++k) {
           // A traced offset escaped along its own direction; a joined one along the base's.
           float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
-#if defined(GDR_GBDPT)
+#if defined(GDR_GBDPT) || defined(GDR_GPM)
           int alive = offset_alive(&o[k]);
-          float2 others_y = alive ? gbdpt_escaped_emission_others(&s, d_off, &o[k].mis) : (float2)(0.0f);
+          float2 others_y = alive ? GPT_EMISSION_OTHERS(escaped, &s, d_off, &o[k].mis) : (float2)(0.0f);
           float3 c_off = alive ? vload3(0, o[k].throughput) * escaped_radiance(&s, d_off) : (float3)(0.0f);
           add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
                    nonfinite);
@@ -150,15 +161,15 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     if (direct) {
       acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
     } else {
-#if defined(GDR_GBDPT)
-      float2 others_x = gbdpt_surface_emission_others(&s, &su, wo, &base.mis);
+#if defined(GDR_GBDPT) || defined(GDR_GPM)
+      float2 others_x = GPT_EMISSION_OTHERS(surface, &s, &su, wo, &base.mis);
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         int alive = offset_alive(&o[k]);
         float3 c_off = (float3)(0.0f);
         float2 others_y = (float2)(0.0f);
         if (alive && so[k].light >= 0) {
           c_off = vload3(0, o[k].throughput) * surface_radiance(&s, &so[k], wo_off[k]);
-          others_y = gbdpt_surface_emission_others(&s, &so[k], wo_off[k], &o[k].mis);
+          others_y = GPT_EMISSION_OTHERS(surface, &s, &so[k], wo_off[k], &o[k].mis);
         }
         add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
                  nonfinite);
@@ -193,6 +204,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   // A light sample the base cannot use (shading and geometric normals disagree) is no sample at
   // all, also for its offsets: the neighbour's base rejects the mirrored case the same way, which
   // keeps the pairwise weights summing to one.
+#if !defined(GDR_GPM)
   int light;
   LightSample ls;
   float3 wi_l;
@@ -267,12 +279,26 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
     }
   }
+#endif
 
 #if defined(GDR_GBDPT)
   if (!bsdf_is_delta(&b) && gbdpt_connects_at(st->depth, params.path.max_depth)) {
     records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, is_diffuse(&b, params.shift_threshold), o, so,
                                      wo_off, params.shift_threshold);
     connectable[atomic_inc(&counters[GPT_COUNTER_CONNECTABLE])] = g;
+  }
+#endif
+#if defined(GDR_GPM)
+  // The visible point: the base's first rough vertex, where the group ends. Its offsets are each
+  // at a vertex of their own (nothing joins before a rough vertex); whether they can merge there
+  // the merge decides.
+  if (!bsdf_is_delta(&b)) {
+    if (gpm_merges_at(st->depth, params.path.max_depth)) {
+      records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, 1, o, so, wo_off, -1.0f);
+      connectable[atomic_inc(&counters[GPT_COUNTER_CONNECTABLE])] = g;
+    }
+    for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
+    return;
   }
 #endif
 

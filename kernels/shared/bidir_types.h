@@ -58,6 +58,15 @@ typedef struct GdrBidirVertex {
   int depth;  // scattering vertices up to and including this one
 } GdrBidirVertex;
 
+// Where a light subpath left its light (bidir_emit): what a shift that moves the subpath's first
+// vertex evaluates the emission toward again (G-PM's photon shift, gbidir/photon_shift.h).
+typedef struct GdrLightOrigin {
+  float p[3];
+  float n[3];  // area lights: the geometric normal there; 0 for the others
+  int light;   // -1: the subpath left no light
+  int pad0;
+} GdrLightOrigin;
+
 // Counters the kernels increment (atomic_inc), read after each step.
 #define BIDIR_COUNTERS(X)                                                                               \
   X(BIDIR_COUNTER_NEXT_RAYS, "")                            /* rays written for the next bounce */      \

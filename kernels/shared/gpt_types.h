@@ -76,7 +76,10 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_FAIL_CHAIN_LONG, "manifold/fail_chain_too_long") /* over MANIFOLD_MAX_CHAIN vertices */ \
   X(GPT_COUNTER_CONNECTABLE, "")                            /* G-BDPT: rough camera vertices recorded */ \
   X(GPT_COUNTER_CONNECTIONS, "gbdpt/connections")           /* camera-light vertex connections tried */ \
-  X(GPT_COUNTER_FAIL_GLOSSY_CONNECTION, "shift_failures/glossy_connection") /* no reconnection there */
+  X(GPT_COUNTER_FAIL_GLOSSY_CONNECTION, "shift_failures/glossy_connection") /* no reconnection there */ \
+  X(GPT_COUNTER_MERGES, "gpm/merges")                       /* G-PM: photons merged at base visible points */ \
+  X(GPT_COUNTER_FAIL_PHOTON_PARENT, "shift_failures/photon_parent") /* delta vertex or light at infinity before it */ \
+  X(GPT_COUNTER_FAIL_PHOTON_LOST, "shift_failures/photon_lost") /* offset photon outside the radius, or no photon */
 enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };
 
 // The base's specular chain while offsets wait for it (GPT_MODE_MANIFOLD), per group: from its

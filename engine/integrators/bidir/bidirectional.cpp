@@ -117,22 +117,26 @@ Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settin
   if (settings_.aux) aux_.emplace(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, film_.pixels());
 }
 
-GdrBidirOptions Bidirectional::pass_options(uint32_t sample, uint32_t light_subpaths) const {
-  GdrBidirOptions o = settings_.options;
-  if (!merges()) return o;
-  const int width = in_.scene.camera.width, height = in_.scene.camera.height;
-  const double scene_radius = in_.scene.bounding_radius();
-  const float r0 = (settings_.radius > 0 ? settings_.radius : 1.5f / float(std::max(width, height))) *
+GdrBidirOptions merging_pass_options(const BidirSettings& settings, const Scene& scene, uint32_t sample,
+                                     uint32_t light_subpaths) {
+  GdrBidirOptions o = settings.options;
+  const int width = scene.camera.width, height = scene.camera.height;
+  const double scene_radius = scene.bounding_radius();
+  const float r0 = (settings.radius > 0 ? settings.radius : 1.5f / float(std::max(width, height))) *
                    float(scene_radius > 0 ? scene_radius : 1.0);
-  o.radius = r0 * std::pow(float(sample) + 1.0f, 0.5f * (settings_.radius_alpha - 1.0f));
+  o.radius = r0 * std::pow(float(sample) + 1.0f, 0.5f * (settings.radius_alpha - 1.0f));
   const double eta = M_PI * double(o.radius) * o.radius * light_subpaths;
   o.vm_normalization = float(1.0 / eta);
-  if (technique() == BIDIR_VCM) {
+  if (o.technique == BIDIR_VCM) {
     const double m = o.mis == BIDIR_MIS_POWER ? eta * eta : eta;
     o.vm_factor = float(m);
     o.vc_factor = float(1.0 / m);
   }
   return o;
+}
+
+GdrBidirOptions Bidirectional::pass_options(uint32_t sample, uint32_t light_subpaths) const {
+  return merges() ? merging_pass_options(settings_, in_.scene, sample, light_subpaths) : settings_.options;
 }
 
 void Bidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {

@@ -67,6 +67,11 @@ const char* bidir_technique_name(int technique);
 // "power" (default) or "balance" from the parameter `mis`, as BIDIR_MIS_*.
 int bidir_mis_param(const IntegratorParams& params);
 
+// pm's and vcm's options for pass `sample` (from 0) merging with `light_subpaths` subpaths: the
+// radius of the schedule above, the density estimate's normalization and VCM's MIS factors.
+GdrBidirOptions merging_pass_options(const BidirSettings& settings, const Scene& scene, uint32_t sample,
+                                     uint32_t light_subpaths);
+
 // bdpt's, pm's and vcm's longest path for the settings' max_depth (segments).
 int bdpt_segments(int max_depth);
 // Mitsuba's max_depth: a light subpath's first vertex connected to the camera is 2 segments.

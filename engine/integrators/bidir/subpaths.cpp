@@ -6,6 +6,7 @@
 static_assert(sizeof(GdrBidirOptions) == 40, "GdrBidirOptions layout changed");
 static_assert(sizeof(GdrBidirPathState) == 56, "GdrBidirPathState layout changed");
 static_assert(sizeof(GdrBidirVertex) == 52, "GdrBidirVertex layout changed");
+static_assert(sizeof(GdrLightOrigin) == 32, "GdrLightOrigin layout changed");
 
 namespace gdr {
 
@@ -30,6 +31,7 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
       queues_(in.context, capacity_, true),
       light_paths_(in.context, capacity_),
       camera_paths_(in.context, lt() ? 0 : capacity_),
+      light_origins_(in.context, capacity_),
       store_(in.context, capacity_ * size_t(store_vertices_)),
       camera_vertices_(in.context, lt() ? 0 : capacity_),
       connectable_(in.context, lt() ? 0 : capacity_),
@@ -49,7 +51,9 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
 void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& sink) {
   const GdrBidirOptions& o = options_;
   counters_.reset();
-  emit_.args(p, o, queues_.rays[0], queues_.slots[0], light_paths_, counters_.buffer(), primary_, in_.device_scene)
+  emit_
+      .args(p, o, queues_.rays[0], queues_.slots[0], light_paths_, light_origins_, counters_.buffer(), primary_,
+            in_.device_scene)
       .run(p.pixel_count);
   cl_uint active = counters_.read()[BIDIR_COUNTER_NEXT_RAYS];
   for (int cur = 0; active > 0; cur = 1 - cur) {
@@ -165,6 +169,12 @@ void BidirSubpaths::begin(const GdrBidirOptions& o, const PrimarySamples& primar
 void BidirSubpaths::trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink) {
   begin(o, PrimarySamples());
   trace_light_subpaths(p, sink);
+  if (merges() && stored_ > 0) build_grid(p);
+}
+
+PhotonGrid BidirSubpaths::grid() const {
+  return PhotonGrid{store_, store_points_, grid_starts_, grid_sorted_, light_origins_,
+                    stored_ > 0 ? grid_buckets_ : 0, cl_uint(capacity_)};
 }
 
 void BidirSubpaths::trace(const GdrPtParams& p, const GdrBidirOptions& o, bool light, const PrimarySamples& primary,

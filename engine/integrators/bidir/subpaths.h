@@ -35,6 +35,19 @@ struct BidirSink {
   Buffer<Vec4>* path_sums = nullptr;
 };
 
+// A batch's stored light vertices as photons (pm, vcm: vertex j of subpath i at
+// store[j * stride + i]), the hash grid over them (bidir/hash_grid.h: each bucket's entries
+// sorted[starts[b], starts[b + 1])) and where each subpath left its light. buckets 0: no photons.
+struct PhotonGrid {
+  const Buffer<GdrBidirVertex>& store;
+  const Buffer<Vec4>& points;
+  const Buffer<cl_uint>& starts;
+  const Buffer<cl_uint>& sorted;
+  const Buffer<GdrLightOrigin>& origins;
+  cl_uint buckets;
+  cl_uint stride;
+};
+
 class BidirSubpaths {
  public:
   static constexpr const char* kProgram = "bidir/bidir.cl";
@@ -51,9 +64,10 @@ class BidirSubpaths {
   // subpaths (no light, or paths too short for them). `aux`: the camera rays' first hits.
   void trace(const GdrPtParams& p, const GdrBidirOptions& o, bool light, const PrimarySamples& primary,
              const BidirSink& sink, AuxLayers* aux);
-  // The light subpaths alone, their vertices left in the store for the caller's own camera
-  // subpaths (G-BDPT's groups: GroupLightSubpaths).
+  // The light subpaths alone, their vertices left in the store (and, merging, the grid built) for
+  // the caller's own camera subpaths (G-BDPT's groups: GroupLightSubpaths; G-PM's: grid()).
   void trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink);
+  PhotonGrid grid() const;
   const Buffer<GdrBidirPathState>& light_paths() const { return light_paths_; }
   const Buffer<GdrBidirVertex>& store() const { return store_; }
   int stored_bound() const { return stored_bound_; }
@@ -91,6 +105,7 @@ class BidirSubpaths {
   cl_uint stored_ = 0;   // and this many in all
   RayQueues queues_;
   Buffer<GdrBidirPathState> light_paths_, camera_paths_;
+  Buffer<GdrLightOrigin> light_origins_;
   Buffer<GdrBidirVertex> store_, camera_vertices_;
   Buffer<cl_uint> connectable_;
   std::optional<DevicePrimitives> primitives_;      // merging: the grid's sort

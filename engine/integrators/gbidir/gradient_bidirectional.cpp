@@ -30,7 +30,7 @@ GptSettings gbdpt_settings(const IntegratorParams& params) {
 
 GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSettings& gpt,
                                              const IntegratorParams& params)
-    : GradientPathTracer(in, gpt, params, true),
+    : GradientPathTracer(in, gpt, params, GroupKind::kConnecting),
       subpaths_(in, BIDIR_BDPT, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()),
       light_tracing_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height),

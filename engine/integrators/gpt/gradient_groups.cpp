@@ -16,9 +16,10 @@ namespace {
 constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
 constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
 
-Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, bool connecting) {
+Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, GroupKind kind) {
   Defines d = gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
-  if (connecting) d["GDR_GBDPT"] = "1";
+  if (kind == GroupKind::kConnecting) d["GDR_GBDPT"] = "1";
+  if (kind == GroupKind::kMerging) d["GDR_GPM"] = "1";
   return d;
 }
 
@@ -42,12 +43,20 @@ size_t GradientGroups::chunk_capacity_for(const RenderInputs& in, const GptSetti
                         in.scene.camera.width, in.scene.camera.height);
 }
 
+const char* GradientGroups::program() const {
+  switch (kind_) {
+    case GroupKind::kConnecting: return kConnectingProgram;
+    case GroupKind::kMerging: return kMergingProgram;
+    default: return kProgram;
+  }
+}
+
 GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, size_t capacity, size_t indices,
-                               bool connecting)
+                               GroupKind kind)
     : in_(in),
       gpt_(gpt),
-      connecting_(connecting),
-      kernels_(in.context, in.scene, gpt_defines(in, gpt, connecting)),
+      kind_(kind),
+      kernels_(in.context, in.scene, gpt_defines(in, gpt, kind)),
       generate_(kernels_.make(program(), "gpt_generate")),
       scatter_(kernels_.make(program(), "gpt_scatter")),
       shade_(kernels_.make(program(), "gpt_shade")),
@@ -62,8 +71,8 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
       offsets_(in.context, capacity_ * GPT_OFFSETS),
       acc_(in.context, indices * GPT_ACC_COUNT),
       pend_(in.context, capacity_ * GPT_PEND_COUNT),
-      records_(in.context, connecting ? capacity_ : 0),
-      connectable_(in.context, connecting ? capacity_ : 0),
+      records_(in.context, kind == GroupKind::kPaths ? 0 : capacity_),
+      connectable_(in.context, kind == GroupKind::kPaths ? 0 : capacity_),
       counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)) {
   const bool manifold = gpt_manifold_enabled(in.scene, gpt);
   chains_ = Buffer<GptChain>(in.context, manifold ? capacity_ : 0);
@@ -73,7 +82,7 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
     manifold_.emplace(in, kernels_, program(), capacity_ * GPT_OFFSETS, gpt.manifold);
     join_.emplace(kernels_.make(program(), "gpt_manifold_join"));
   }
-  if (connecting) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
+  if (kind == GroupKind::kConnecting) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
   if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
 }
 
@@ -124,7 +133,7 @@ void GradientGroups::connect(const GdrGptParams& p, int camera_depth, cl_uint co
 }
 
 void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
-                           const GroupLightSubpaths* light) {
+                           const GroupLightSubpaths* light, const RecordsStep& merge) {
   Buffer<GdrRayHit>* base_rays = base_queues_.rays;
   const cl_uint count = p.path.pixel_count;
 
@@ -150,6 +159,7 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
     intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
     add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "shadow");
     if (light && connectable > 0) connect(p, depth + 1, connectable, *light);
+    if (merge && connectable > 0) merge(connectable);
     if (next > 0) {
       counters_.reset();
       shift_

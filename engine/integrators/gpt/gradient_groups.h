@@ -6,8 +6,11 @@
 // Metropolis integrator one per step of its chains (the index is the chain, whose state feeds the
 // group's random numbers through the sampler seam). The gradient-domain bidirectional path tracer
 // builds them from its own program (G-PT's steps with G-BDPT's MIS) and connects each group's
-// rough vertices to the vertices of one light subpath a group (GroupLightSubpaths).
+// rough vertices to the vertices of one light subpath a group (GroupLightSubpaths); the
+// gradient-domain photon mapper's end at the base's first rough vertex, which its merge stage
+// (gbidir/photon_shifts.h) takes over from the records after each shade step.
 #pragma once
+#include <functional>
 #include <optional>
 
 #include "render/aux_layers.h"
@@ -45,16 +48,20 @@ struct GroupLightSubpaths {
   int stored_bound;  // no subpath stored more vertices
 };
 
+// What a batch of groups is: G-PT's paths, G-BDPT's camera subpaths (which connect to light
+// subpaths) or G-PM's (which end at their visible points, where the caller merges).
+enum class GroupKind { kPaths, kConnecting, kMerging };
+
 class GradientGroups {
  public:
   static constexpr const char* kProgram = "gpt/gpt.cl";
   static constexpr const char* kConnectingProgram = "gbidir/gbdpt.cl";
+  static constexpr const char* kMergingProgram = "gbidir/gpm.cl";
 
   // Up to `capacity` groups a batch; `indices` path indices (acc holds GPT_ACC_COUNT a path).
-  // `connecting`: G-BDPT's groups (kConnectingProgram), which connect to light subpaths.
   GradientGroups(const RenderInputs& inputs, const GptSettings& gpt, size_t capacity, size_t indices,
-                 bool connecting = false);
-  const char* program() const { return connecting_ ? kConnectingProgram : kProgram; }
+                 GroupKind kind = GroupKind::kPaths);
+  const char* program() const;
 
   // Groups in flight for a chunk of the scene's film (fewer with the manifold shift: its walks'
   // state).
@@ -65,11 +72,20 @@ class GradientGroups {
   Buffer<Vec4>& acc() { return acc_; }
   // The base paths' states after a trace (a group's path.depth: the depth it ended at).
   const Buffer<GptBaseState>& bases() const { return bases_; }
+  // Connecting and merging groups: the vertices the last shade step recorded (records()[g]), for
+  // the groups listed in connectable(); the counters the steps after it count into.
+  const Buffer<GbdptCameraVertex>& records() const { return records_; }
+  const Buffer<cl_uint>& connectable() const { return connectable_; }
+  DeviceCounters& counters() { return counters_; }
+
+  // Called after each shade step of merging groups with the number of groups it recorded.
+  using RecordsStep = std::function<void(cl_uint recorded)>;
 
   // The groups of paths [p.path.first_pixel, + p.path.pixel_count), their sums into acc.
   // `aux`: the base camera rays' first hits. `light`: connecting groups' light subpaths.
+  // `merge`: merging groups' merge step.
   void trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
-             const GroupLightSubpaths* light = nullptr);
+             const GroupLightSubpaths* light = nullptr, const RecordsStep& merge = {});
   GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
   void report(Stats* stats);
 
@@ -86,7 +102,7 @@ class GradientGroups {
 
   RenderInputs in_;
   GptSettings gpt_;
-  bool connecting_;
+  GroupKind kind_;
   KernelFactory kernels_;
   Kernel generate_, scatter_, shade_, shadow_, shift_;
   size_t capacity_;

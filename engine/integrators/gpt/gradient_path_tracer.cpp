@@ -15,13 +15,13 @@ GptSettings gpt_settings(const IntegratorParams& params) {
 }
 
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
-    : GradientPathTracer(in, gpt, params, false) {}
+    : GradientPathTracer(in, gpt, params, GroupKind::kPaths) {}
 
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params,
-                                       bool connecting)
+                                       GroupKind kind)
     : in_(in),
       groups_(in, gpt, GradientGroups::chunk_capacity_for(in, gpt),
-              size_t(in.scene.camera.width) * in.scene.camera.height, connecting),
+              size_t(in.scene.camera.width) * in.scene.camera.height, kind),
       params_(params),
       gather_(groups_.kernels().make(groups_.program(), "gpt_gather")),
       film_(in.context, in.scene.camera.width, in.scene.camera.height) {

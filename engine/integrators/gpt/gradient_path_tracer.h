@@ -35,9 +35,9 @@ class GradientPathTracer : public Integrator {
   RenderResult render(const RenderSettings& settings) override;
 
  protected:
-  // `connecting`: the groups of the gradient-domain bidirectional path tracer (GradientGroups).
+  // `kind`: the groups of the gradient-domain bidirectional integrators (GradientGroups).
   GradientPathTracer(const RenderInputs& inputs, const GptSettings& gpt, const IntegratorParams& params,
-                     bool connecting);
+                     GroupKind kind);
   // The groups of pixels [first, first + count) in pass `sample`, their sums into groups_.acc().
   virtual void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count);
   // After a pass's chunks, before its sums are gathered into the film.

@@ -1,0 +1,51 @@
+#include "integrators/gbidir/gradient_photon_mapping.h"
+
+#include "util/error.h"
+#include "util/log.h"
+
+namespace gdr {
+
+const std::vector<std::string> kGpmParams = {"shift", "shift_threshold", "aux", "radius", "radius_alpha"};
+
+GptSettings gpm_settings(const IntegratorParams& params) {
+  GptSettings s = gpt_shift_settings(params);
+  if (s.shift == GPT_SHIFT_MANIFOLD) {
+    throw Error("integrator parameter shift: gpm shifts its camera subpaths by hybrid or replay (they end at "
+                "their first rough vertex, before any manifold walk)");
+  }
+  s.aux = params.flag("aux", false);
+  return s;
+}
+
+GradientPhotonMapping::GradientPhotonMapping(const RenderInputs& in, const GptSettings& gpt,
+                                             const IntegratorParams& params)
+    : GradientPathTracer(in, gpt, params, GroupKind::kMerging),
+      photons_(pm_settings(params)),
+      subpaths_(in, BIDIR_PM, groups_.capacity()),
+      splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, 1),
+      shifts_(in, groups_) {}
+
+void GradientPhotonMapping::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
+                                        uint32_t count) {
+  GdrGptParams p = groups_.params(settings, sample, first, count);
+  p.path.max_depth = bdpt_segments(settings.max_depth);
+  const GdrBidirOptions o = merging_pass_options(photons_, in_.scene, sample, count);
+  const bool light = light_subpaths_allowed(settings.max_depth) && p.path.light_count > 0;
+  if (light) subpaths_.trace_light(p.path, o, BidirSink{groups_.acc(), splats_});
+  const PhotonGrid grid = subpaths_.grid();
+  groups_.trace(p, PrimarySamples(), aux(), nullptr, [&](cl_uint recorded) {
+    if (light) shifts_.merge(p, o, recorded, groups_, grid);
+  });
+  groups_.report(in_.context.stats());
+  subpaths_.report(in_.context.stats());
+}
+
+RenderResult GradientPhotonMapping::render(const RenderSettings& settings) {
+  if (bdpt_segments(settings.max_depth) != settings.max_depth) {
+    log::warn("gpm renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
+              " asked for more): the light-vertex store's bound");
+  }
+  return GradientPathTracer::render(settings);
+}
+
+}  // namespace gdr
