@@ -1,5 +1,6 @@
 // G-BDPT's record of a rough camera vertex of a group (shared/gbidir_types.h): written by the shade
-// step (gpt/shade.h built with GDR_GBDPT), read by the connections (gbidir/connect.h).
+// step (gpt/shade.h built with GDR_GBDPT), read by the connections (gbidir/connect.h). G-PM records
+// its visible points the same way (GDR_GPM; read by gbidir/merge.h).
 #pragma once
 #include "gradient/offsets.h"
 #include "path/scene.h"

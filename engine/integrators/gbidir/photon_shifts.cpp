@@ -28,12 +28,12 @@ void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, 
       .args(p, o, first, count, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted,
             g.buckets, g.origins, g.stride, starts_, shift_rays_, cl_uint(kMaxShiftRays), in_.device_scene)
       .run(count);
-  const std::vector<cl_uint> bounds = [&] {
+  size_t photons = 0;
+  {
     auto m = starts_.map(size_t(first) + count + 1);
-    return std::vector<cl_uint>{m.data()[first], m.data()[first + count]};
-  }();
-  intersect(in_.embree, shift_rays_, std::min(kMaxShiftRays, size_t(bounds[1] - bounds[0]) * GPT_OFFSETS), false,
-            "photon_shift");
+    photons = m.data()[first + count] - m.data()[first];
+  }
+  intersect(in_.embree, shift_rays_, std::min(kMaxShiftRays, photons * GPT_OFFSETS), false, "photon_shift");
   groups.counters().reset();
   merge_
       .args(p, o, first, count, groups.connectable(), groups.records(), groups.bases(), g.store, g.points, g.starts,
