@@ -1,11 +1,13 @@
-// Wavefront path tracer: generate camera rays, shade hits (emission, next-event estimation with
-// MIS, BSDF sampling, Russian roulette), and add unoccluded shadow-ray contributions. The host
-// intersects the queues with Embree between these kernels.
+// Wavefront path tracer: generate camera rays, route hits to per-material queues, shade each
+// queue (emission, next-event estimation with MIS, BSDF sampling, Russian roulette), and add
+// unoccluded shadow-ray contributions. The host intersects the queues with Embree between these
+// kernels.
 #include "path/aux.h"
 #include "path/camera_sample.h"
 #include "path/continuation.h"
 #include "path/emission.h"
 #include "path/film.h"
+#include "path/material_queues.h"
 #include "path/nee.h"
 #include "path/scene.h"
 #include "path/shadow.h"
@@ -25,27 +27,46 @@ __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, 
   paths[i] = path_start(pixel, params.sample);
 }
 
-__kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit* rays_in,
-                       __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
-                       __global GdrRay* shadow_rays, __global float4* shadow_values,
-                       __global GdrPathState* paths, __global float4* film, __global uint* counters,
-                       SCENE_DATA_ARGS) {
+// Routes the queue's hits to the material queues (keys: each entry's BSDF type; the sort by key
+// makes the queues: render/wavefront/material_queues.h) and adds what the misses see of the
+// environment.
+__kernel void pt_route(GdrPtParams params, uint count, __global const GdrRayHit* rays_in,
+                       __global const uint* queue_in, __global uint* keys, __global const GdrPathState* paths,
+                       __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
-  if (q >= count || path_no_segments(params.max_depth)) return;
+  if (q >= count) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  GdrRayHit rh = rays_in[q];
+  if (rh.hit.geomID != GDR_INVALID_ID) {
+    keys[q] = material_queue_key(&s, rh.hit.primID);
+    return;
+  }
+  keys[q] = MATERIAL_QUEUE_NONE;
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+  if (s.env_light < 0 || path_no_segments(params.max_depth)) return;
+  GdrPathState st = paths[queue_in[q]];
+  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  film_add(film, st.pixel, path_escaped_emission(&s, &st, vload3(0, st.throughput), dir, params.strategy),
+           &counters[PT_COUNTER_NONFINITE]);
+#endif
+}
+
+// A hit of a material of BSDF type `type`: emission, next-event estimation with MIS, then the
+// BSDF sample that continues the path (Russian roulette).
+inline void pt_shade_hit(GdrPtParams params, uint q, int type, __global const GdrRayHit* rays_in,
+                         __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
+                         __global GdrRay* shadow_rays, __global float4* shadow_values,
+                         __global GdrPathState* paths, __global float4* film, __global uint* counters,
+                         const SceneData* sd) {
+  if (path_no_segments(params.max_depth)) return;
+  SceneData s = *sd;
   __global uint* nonfinite = &counters[PT_COUNTER_NONFINITE];
   uint slot = queue_in[q];
   GdrPathState st = paths[slot];
   GdrRayHit rh = rays_in[q];
+  if (rh.hit.geomID == GDR_INVALID_ID) return;
   float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
   float3 beta = vload3(0, st.throughput);
-
-  if (rh.hit.geomID == GDR_INVALID_ID) {
-#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
-    if (s.env_light >= 0) film_add(film, st.pixel, path_escaped_emission(&s, &st, beta, dir, params.strategy), nonfinite);
-#endif
-    return;
-  }
 
   Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
   float3 wo = -dir;
@@ -57,7 +78,7 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
 #endif
   if (path_depth_reached(&st, params.max_depth)) return;
 
-  Bsdf b = surface_bsdf(&s, &su);
+  Bsdf b = surface_bsdf_of_type(&s, &su, type);
   Frame frame = frame_from_normal(su.ns);
   float3 wo_local = frame_to_local(&frame, wo);
   PathSampler ps = path_state_sampler(&st, params.seed);
@@ -92,3 +113,20 @@ __kernel void pt_shade(GdrPtParams params, uint count, __global const GdrRayHit*
   queue_out[k] = slot;
   spawn_ray(&rays_out[k], su.p, su.ng, wi, slot);
 }
+
+// pt_shade_<material>: queue entries sorted[first, first + count) (or, with `direct`, the queue's
+// entries [first, first + count) themselves: the scene has one material type) of one material.
+#define PT_SHADE_QUEUE(name, TYPE)                                                                            \
+  __kernel void pt_shade_##name(GdrPtParams params, uint count, uint first, int direct,                      \
+                                __global const uint* sorted, __global const GdrRayHit* rays_in,              \
+                                __global const uint* queue_in, __global GdrRayHit* rays_out,                 \
+                                __global uint* queue_out, __global GdrRay* shadow_rays,                      \
+                                __global float4* shadow_values, __global GdrPathState* paths,                \
+                                __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {           \
+    uint i = get_global_id(0);                                                                               \
+    if (i >= count) return;                                                                                  \
+    SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                     \
+    pt_shade_hit(params, direct ? first + i : sorted[first + i], TYPE, rays_in, queue_in, rays_out, queue_out, \
+                 shadow_rays, shadow_values, paths, film, counters, &s);                                     \
+  }
+GDR_MATERIAL_QUEUES(PT_SHADE_QUEUE)

@@ -38,6 +38,19 @@ __kernel void compact_scatter(__global const uint* flags, __global const uint* o
   if (i < n && flags[i]) out[offsets[i]] = items[i];
 }
 
+// Selection by key, step 1: flags[i] = (keys[i] == key), scanned next into the output positions.
+__kernel void key_flags(__global const uint* keys, uint n, uint key, __global uint* flags) {
+  uint i = get_global_id(0);
+  if (i < n) flags[i] = keys[i] == key ? 1u : 0u;
+}
+
+// Step 2: out lists the indices i with keys[i] == key, in order (offsets: the scanned flags).
+__kernel void key_scatter(__global const uint* keys, uint n, uint key, __global const uint* offsets,
+                          __global uint* out) {
+  uint i = get_global_id(0);
+  if (i < n && keys[i] == key) out[offsets[i]] = i;
+}
+
 // Counting sort by key, step 1: how many items each key has (keys >= buckets are left out).
 __kernel void sort_count(__global const uint* keys, uint n, uint buckets, __global uint* counts) {
   uint i = get_global_id(0);

@@ -1,5 +1,5 @@
 // The device primitives (render/wavefront/primitives.h) against their definitions on the host:
-// exclusive scan, compaction and the stable sort by key, at sizes around the scan's block of
+// exclusive scan, compaction, selection by key and the stable sort by key, at sizes around the scan's block of
 // 256 and across its levels (256^2 items need two).
 #include <gtest/gtest.h>
 
@@ -51,6 +51,25 @@ TEST(DevicePrimitives, CompactKeepsOrder) {
     std::vector<cl_uint> got = out.read();
     got.resize(count);
     EXPECT_EQ(got, want) << n << " items";
+  }
+}
+
+TEST(DevicePrimitives, SelectKeyKeepsOrder) {
+  Context& ctx = test::default_context();
+  DevicePrimitives prim(ctx);
+  for (size_t n : kSizes) {
+    std::vector<cl_uint> keys = random_values(n, 4, uint32_t(n) + 4);
+    Buffer<cl_uint> k(ctx, keys), offsets(ctx, n), out(ctx, n);
+    for (cl_uint key : {0u, 3u, 4u}) {
+      cl_uint count = prim.select_key(k, n, key, offsets, out);
+      std::vector<cl_uint> want;
+      for (size_t i = 0; i < n; ++i)
+        if (keys[i] == key) want.push_back(cl_uint(i));
+      ASSERT_EQ(count, want.size()) << n << " items, key " << key;
+      std::vector<cl_uint> got = out.read();
+      got.resize(count);
+      EXPECT_EQ(got, want) << n << " items, key " << key;
+    }
   }
 }
 

@@ -28,7 +28,7 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       pt_(pt),
       kernels_(in.context, in.scene),
       generate_(kernels_.make(kProgram, "pt_generate")),
-      shade_(kernels_.make(kProgram, "pt_shade")),
+      route_(kernels_.make(kProgram, "pt_route")),
       shadow_(kernels_.make(kProgram, "path_shadow_add")),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       queues_(in.context, capacity_, true),
@@ -36,7 +36,8 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       shadow_rays_(in.context, capacity_, kRayQueueFlags),
       shadow_values_(in.context, capacity_),
       counters_(in.context, GDR_COUNTER_NAMES(PT_COUNTERS)),
-      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
+      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
+      materials_(in.context, in.scene, kernels_, kProgram, "pt_shade", capacity_) {
   if (pt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
 }
 
@@ -56,10 +57,17 @@ void PathTracer::intersect(int cur, cl_uint active, bool camera) {
 
 const std::vector<cl_uint>& PathTracer::shade(const GdrPtParams& params, int cur, cl_uint active) {
   counters_.reset();
-  shade_
-      .args(params, active, queues_.rays[cur], queues_.slots[cur], queues_.rays[1 - cur], queues_.slots[1 - cur],
-            shadow_rays_, shadow_values_, paths_, film_["radiance"], counters_.buffer(), in_.device_scene)
+  route_
+      .args(params, active, queues_.rays[cur], queues_.slots[cur], materials_.keys(), paths_, film_["radiance"],
+            counters_.buffer(), in_.device_scene)
       .run(active);
+  for (const MaterialQueues::Queue& q : materials_.route(active)) {
+    q.kernel
+        ->args(params, q.count, cl_uint(0), cl_int(materials_.direct()), *q.entries, queues_.rays[cur],
+               queues_.slots[cur], queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, shadow_values_,
+               paths_, film_["radiance"], counters_.buffer(), in_.device_scene)
+        .run(q.count);
+  }
   return counters_.read();
 }
 

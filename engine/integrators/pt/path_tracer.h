@@ -13,6 +13,7 @@
 #include "render/integrator_params.h"
 #include "render/wavefront/device_counters.h"
 #include "render/wavefront/kernel_factory.h"
+#include "render/wavefront/material_queues.h"
 #include "render/wavefront/ray_queues.h"
 #include "shared/pt_types.h"
 
@@ -36,7 +37,8 @@ class PathTracer : public Integrator {
   GdrPtParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
   void generate(const GdrPtParams& params);  // camera rays into queue 0
   void intersect(int cur, cl_uint active, bool camera);
-  const std::vector<cl_uint>& shade(const GdrPtParams& params, int cur, cl_uint active);  // PT_COUNTER_*
+  // Routes the hits to the material queues and shades each (PT_COUNTER_*).
+  const std::vector<cl_uint>& shade(const GdrPtParams& params, int cur, cl_uint active);
   void occlude(cl_uint shadows);
   void add_shadows(cl_uint shadows);
   Buffer<GdrRayHit>& rays(int cur) { return queues_.rays[cur]; }
@@ -51,7 +53,7 @@ class PathTracer : public Integrator {
   RenderInputs in_;
   PtSettings pt_;
   KernelFactory kernels_;
-  Kernel generate_, shade_, shadow_;
+  Kernel generate_, route_, shadow_;
   size_t capacity_;  // paths in flight at once
   RayQueues queues_;
   Buffer<GdrPathState> paths_;
@@ -59,6 +61,7 @@ class PathTracer : public Integrator {
   Buffer<Vec4> shadow_values_;
   DeviceCounters counters_;
   Film film_;
+  MaterialQueues materials_;
   std::optional<AuxLayers> aux_;
 };
 

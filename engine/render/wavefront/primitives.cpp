@@ -15,6 +15,8 @@ DevicePrimitives::DevicePrimitives(Context& ctx)
       scan_blocks_(ctx.program(kProgram)->kernel("scan_blocks")),
       scan_add_(ctx.program(kProgram)->kernel("scan_add")),
       compact_(ctx.program(kProgram)->kernel("compact_scatter")),
+      key_flags_(ctx.program(kProgram)->kernel("key_flags")),
+      key_scatter_(ctx.program(kProgram)->kernel("key_scatter")),
       count_(ctx.program(kProgram)->kernel("sort_count")),
       scatter_(ctx.program(kProgram)->kernel("sort_scatter")),
       order_(ctx.program(kProgram)->kernel("sort_order_buckets")) {}
@@ -45,6 +47,15 @@ cl_uint DevicePrimitives::compact(const Buffer<cl_uint>& flags, const Buffer<cl_
   flags.copy_to(offsets, n);
   cl_uint count = exclusive_scan(offsets, n);
   compact_.args(flags, offsets, items, cl_uint(n), out).run(n);
+  return count;
+}
+
+cl_uint DevicePrimitives::select_key(const Buffer<cl_uint>& keys, size_t n, cl_uint key, Buffer<cl_uint>& offsets,
+                                     Buffer<cl_uint>& out) {
+  if (n == 0) return 0;
+  key_flags_.args(keys, cl_uint(n), key, offsets).run(n);
+  cl_uint count = exclusive_scan(offsets, n);
+  key_scatter_.args(keys, cl_uint(n), key, offsets, out).run(n);
   return count;
 }
 

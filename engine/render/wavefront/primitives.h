@@ -20,6 +20,11 @@ class DevicePrimitives {
   cl_uint compact(const Buffer<cl_uint>& flags, const Buffer<cl_uint>& items, size_t n, Buffer<cl_uint>& offsets,
                   Buffer<cl_uint>& out);
 
+  // out gets the indices i < n with keys[i] == key, in order; returns their count. `offsets`:
+  // scratch of n entries.
+  cl_uint select_key(const Buffer<cl_uint>& keys, size_t n, cl_uint key, Buffer<cl_uint>& offsets,
+                     Buffer<cl_uint>& out);
+
   // Sorts the indices i < n by keys[i] (keys >= buckets are left out): sorted[starts[k],
   // starts[k + 1]) lists key k's indices in ascending order. `starts` has buckets + 1 entries;
   // returns how many indices were sorted.
@@ -30,7 +35,7 @@ class DevicePrimitives {
   cl_uint scan_level(Buffer<cl_uint>& data, size_t n, size_t level);
 
   Context& ctx_;
-  Kernel scan_blocks_, scan_add_, compact_, count_, scatter_, order_;
+  Kernel scan_blocks_, scan_add_, compact_, key_flags_, key_scatter_, count_, scatter_, order_;
   std::deque<Buffer<cl_uint>> sums_;  // block sums per level of the scan (a deque: growing keeps references)
   Buffer<cl_uint> cursor_;
 };

@@ -1,0 +1,50 @@
+// Per-material queues (pbrt-v4's wavefront design): after an intersection an integrator's routing
+// kernel writes each queue entry's key, its hit's BSDF type (kernels/path/material_queues.h), and
+// the entries of each type the scene has become that type's queue (in order: the images do not
+// depend on the routing). Each queue is shaded by its own kernel, `<stage>_<type>` (e.g.
+// pt_shade_diffuse), specialized for that material; a type the scene lacks has no queue and no
+// launch. With one type there is nothing to route: its kernel takes the whole queue (direct).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "render/wavefront/kernel_factory.h"
+#include "render/wavefront/primitives.h"
+#include "scene/scene.h"
+
+namespace gdr {
+
+class MaterialQueues {
+ public:
+  // The kernels `stage`_<type> of `program` for the scene's types; up to `capacity` entries.
+  MaterialQueues(Context& context, const Scene& scene, const KernelFactory& kernels, const std::string& program,
+                 const std::string& stage, size_t capacity);
+
+  struct Queue {
+    int type;                       // BSDF_*
+    cl_uint count;                  // entries
+    const Buffer<cl_uint>* entries; // their positions in the routed queue (unused when direct)
+    Kernel* kernel;
+  };
+
+  // The routing kernel's output: each entry's key (BSDF type, or BSDF_TYPE_COUNT for none).
+  Buffer<cl_uint>& keys() { return keys_; }
+  // No routing: the scene has one material type, whose kernel takes the queue as it is.
+  bool direct() const { return kinds_.size() == 1; }
+  // The non-empty queues of the first n routed entries (direct: the one type's, all n entries).
+  const std::vector<Queue>& route(cl_uint n);
+
+ private:
+  Context& ctx_;
+  struct Kind {
+    int type;
+    Kernel kernel;
+    Buffer<cl_uint> entries;
+  };
+  std::vector<Kind> kinds_;  // one per type the scene has
+  Buffer<cl_uint> keys_, scratch_;
+  DevicePrimitives primitives_;
+  std::vector<Queue> queues_;
+};
+
+}  // namespace gdr

@@ -1,0 +1,60 @@
+// The path tracer's per-material queues: a scene pays only for the materials it has. Its program
+// holds a shading kernel for each BSDF type the scene uses and none for the others, a render
+// launches exactly those (counted per kernel in the stats), and every routed hit is shaded by
+// one of them. On the project's diffuse Cornell box (one type: no routing), the glass box
+// (diffuse and dielectric) and the environment scene (diffuse, rough conductor, rough plastic).
+// The images do not depend on the routing: scripts/render-hashes renders them bit for bit as one
+// shading kernel did.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "integrators/pt/path_tracer.h"
+#include "render/wavefront/kernel_factory.h"
+#include "scene/load_scene.h"
+#include "scene/scene_features.h"
+#include "support/agreement.h"
+#include "support/render.h"
+#include "util/error.h"
+
+namespace gdr {
+namespace {
+
+void expect_queues_of(const std::string& file, int expected_types) {
+  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32);
+  Stats stats;
+  Context ctx(select_device(""), &stats);
+  test::SceneOnDevice on_device(scene, &stats, ctx);
+  RenderSettings s;
+  s.spp = 2;
+  s.seed = 9;
+  s.max_depth = 6;
+  PathTracer(on_device.inputs(), PtSettings{}).render(s);
+
+  KernelFactory kernels(ctx, scene);
+  int types = 0;
+  uint64_t shaded = 0;
+  for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
+    const std::string name = std::string("pt_shade_") + bsdf_type_name(t);
+    if (scene.features.bsdf[t]) {
+      ++types;
+      EXPECT_GT(stats.count("kernel_items/" + name), 0u) << file << ": " << name << " never ran";
+      shaded += stats.count("kernel_items/" + name);
+    } else {
+      EXPECT_EQ(stats.count("kernel_items/" + name), 0u) << file << ": " << name << " ran";
+      EXPECT_THROW(kernels.make("pt/pt.cl", name), Error) << file << ": the program holds " << name;
+    }
+  }
+  EXPECT_EQ(types, expected_types) << file;
+  // Every queue entry was routed; the hits among them were shaded once each (misses are not).
+  EXPECT_GT(shaded, 0u);
+  EXPECT_LE(shaded, stats.count("kernel_items/pt_route")) << file;
+  EXPECT_EQ(stats.count("kernel_items/key_flags") > 0, types > 1) << file << ": routing where there is nothing to route";
+}
+
+TEST(MaterialQueues, DiffuseOnlySceneLaunchesOnlyDiffuse) { expect_queues_of("cornell-box.xml", 1); }
+TEST(MaterialQueues, GlassBoxLaunchesItsTwoMaterials) { expect_queues_of("glass-box.xml", 2); }
+TEST(MaterialQueues, EnvironmentSceneLaunchesItsThreeMaterials) { expect_queues_of("environment.xml", 3); }
+
+}  // namespace
+}  // namespace gdr
