@@ -27,9 +27,21 @@ __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, 
   paths[i] = path_start(pixel, params.sample);
 }
 
-// Routes the queue's hits to the material queues (keys: each entry's BSDF type; the sort by key
-// makes the queues: render/wavefront/material_queues.h) and adds what the misses see of the
-// environment.
+// What a miss sees of the environment.
+inline void pt_escaped(const GdrPtParams* params, const SceneData* s, GdrRayHit* rh,
+                       __global const GdrPathState* path, __global float4* film, __global uint* counters) {
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+  if (s->env_light < 0 || path_no_segments(params->max_depth)) return;
+  GdrPathState st = *path;
+  float3 dir = (float3)(rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z);
+  film_add(film, st.pixel, path_escaped_emission(s, &st, vload3(0, st.throughput), dir, params->strategy),
+           &counters[PT_COUNTER_NONFINITE]);
+#endif
+}
+
+// Routes the queue's hits to the material queues (keys: each entry's BSDF type, from which
+// render/wavefront/material_queues.h makes the queues) and adds what the misses see. Scenes with
+// one material type skip it: their kernel takes the queue as it is, misses included.
 __kernel void pt_route(GdrPtParams params, uint count, __global const GdrRayHit* rays_in,
                        __global const uint* queue_in, __global uint* keys, __global const GdrPathState* paths,
                        __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
@@ -42,18 +54,13 @@ __kernel void pt_route(GdrPtParams params, uint count, __global const GdrRayHit*
     return;
   }
   keys[q] = MATERIAL_QUEUE_NONE;
-#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
-  if (s.env_light < 0 || path_no_segments(params.max_depth)) return;
-  GdrPathState st = paths[queue_in[q]];
-  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
-  film_add(film, st.pixel, path_escaped_emission(&s, &st, vload3(0, st.throughput), dir, params.strategy),
-           &counters[PT_COUNTER_NONFINITE]);
-#endif
+  pt_escaped(&params, &s, &rh, &paths[queue_in[q]], film, counters);
 }
 
 // A hit of a material of BSDF type `type`: emission, next-event estimation with MIS, then the
-// BSDF sample that continues the path (Russian roulette).
-inline void pt_shade_hit(GdrPtParams params, uint q, int type, __global const GdrRayHit* rays_in,
+// BSDF sample that continues the path (Russian roulette). `direct`: the queue was not routed, and
+// a miss is added here.
+inline void pt_shade_hit(GdrPtParams params, uint q, int type, int direct, __global const GdrRayHit* rays_in,
                          __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
                          __global GdrRay* shadow_rays, __global float4* shadow_values,
                          __global GdrPathState* paths, __global float4* film, __global uint* counters,
@@ -64,7 +71,10 @@ inline void pt_shade_hit(GdrPtParams params, uint q, int type, __global const Gd
   uint slot = queue_in[q];
   GdrPathState st = paths[slot];
   GdrRayHit rh = rays_in[q];
-  if (rh.hit.geomID == GDR_INVALID_ID) return;
+  if (rh.hit.geomID == GDR_INVALID_ID) {
+    if (direct) pt_escaped(&params, &s, &rh, &paths[slot], film, counters);
+    return;
+  }
   float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
   float3 beta = vload3(0, st.throughput);
 
@@ -126,7 +136,7 @@ inline void pt_shade_hit(GdrPtParams params, uint q, int type, __global const Gd
     uint i = get_global_id(0);                                                                               \
     if (i >= count) return;                                                                                  \
     SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                     \
-    pt_shade_hit(params, direct ? first + i : sorted[first + i], TYPE, rays_in, queue_in, rays_out, queue_out, \
-                 shadow_rays, shadow_values, paths, film, counters, &s);                                     \
+    pt_shade_hit(params, direct ? first + i : sorted[first + i], TYPE, direct, rays_in, queue_in, rays_out,     \
+                 queue_out, shadow_rays, shadow_values, paths, film, counters, &s);                          \
   }
 GDR_MATERIAL_QUEUES(PT_SHADE_QUEUE)

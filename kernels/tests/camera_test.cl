@@ -44,3 +44,16 @@ __kernel void camera_pixel_weights(__global const GdrCamera* camera, uint n, __g
       for (int x = lo.x; x <= hi.x; ++x) out[y * cam.width + x] += camera_pixel_weight(&cam, x, y, raster[i]);
   }
 }
+
+// The filter's one-axis sampling (kernels/camera/camera.h): t[i] drawn from u[i] over [lo, hi].
+__kernel void camera_filter_samples(int filter, float r, float lo, float hi, uint n, __global const float* u,
+                                    __global float* t) {
+  uint i = get_global_id(0);
+  if (i < n) t[i] = sample_filter_axis(filter, r, (float2)(lo, hi), u[i]);
+}
+
+// The filter's value at t[i].
+__kernel void camera_filter_values(int filter, float r, uint n, __global const float* t, __global float* out) {
+  uint i = get_global_id(0);
+  if (i < n) out[i] = filter_eval(filter, r, t[i]);
+}

@@ -57,10 +57,12 @@ void PathTracer::intersect(int cur, cl_uint active, bool camera) {
 
 const std::vector<cl_uint>& PathTracer::shade(const GdrPtParams& params, int cur, cl_uint active) {
   counters_.reset();
-  route_
-      .args(params, active, queues_.rays[cur], queues_.slots[cur], materials_.keys(), paths_, film_["radiance"],
-            counters_.buffer(), in_.device_scene)
-      .run(active);
+  if (!materials_.direct()) {
+    route_
+        .args(params, active, queues_.rays[cur], queues_.slots[cur], materials_.keys(), paths_, film_["radiance"],
+              counters_.buffer(), in_.device_scene)
+        .run(active);
+  }
   for (const MaterialQueues::Queue& q : materials_.route(active)) {
     q.kernel
         ->args(params, q.count, cl_uint(0), cl_int(materials_.direct()), *q.entries, queues_.rays[cur],
