@@ -28,7 +28,7 @@ __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, 
 }
 
 // What a miss sees of the environment.
-inline void pt_escaped(const GdrPtParams* params, const SceneData* s, GdrRayHit* rh,
+inline void pt_escaped(const GdrPtParams* params, const SceneData* s, const GdrRayHit* rh,
                        __global const GdrPathState* path, __global float4* film, __global uint* counters) {
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
   if (s->env_light < 0 || path_no_segments(params->max_depth)) return;
