@@ -141,7 +141,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
           if (dot(d, d) <= r2 && photon_shift_eval(&s, &pa, sy.p, sy.ng, phi, &sy2, &phi2, &ratio)) {
             float3 wo_o = frame_to_local(&fo[k], vload3(0, rec.offset[k].wo));
             float3 co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
-                        photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o, normalize(pa.p - sy2.p)) * phi2;
+                        photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o, photon_toward_parent(&pa, sy2.p)) * phi2;
             if (max3(co) > 0.0f) {
               w = 1.0f / (1.0f + rec.ratio[k] * ratio);
               if (!isfinite(w)) w = 1.0f;

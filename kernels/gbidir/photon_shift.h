@@ -9,9 +9,11 @@
 // throughput and its density from p change by
 //   throughput: F(w') / F(w) * G(p, y') / G(p, y),   density: pdf(w') G(p, y') / (pdf(w) G(p, y)),
 // with F the parent's scattering (or emission) times its cosine, G(p, q) = |cos at q| / |q - p|^2
-// (the measure of the photon's surface seen from p) and w, w' the directions from p. A parent on a
-// delta surface (the manifold walk the reference takes there is not done) or at infinity refuses
-// the shift.
+// (the measure of the photon's surface seen from p) and w, w' the directions from p. A light at
+// infinity sends the photon along the same direction from a point of its disc moved with it (a
+// translation: throughput and density unchanged); the ray then comes from outside the scene. A
+// parent on a delta surface (the manifold walk the reference takes there is not done) refuses the
+// shift.
 #pragma once
 #include "bsdf/transport.h"
 #include "core/ray_queue.h"
@@ -20,9 +22,10 @@
 #include "path/sides.h"
 #include "shared/bidir_types.h"
 
-#define GPM_PARENT_NONE 0     // a delta vertex or a light at infinity: no reconnection
-#define GPM_PARENT_SURFACE 1  // a rough vertex of the light subpath, stored just before the photon
-#define GPM_PARENT_LIGHT 2    // the point the light subpath left its (area, point or spot) light from
+#define GPM_PARENT_NONE 0      // a delta vertex: no reconnection
+#define GPM_PARENT_SURFACE 1   // a rough vertex of the light subpath, stored just before the photon
+#define GPM_PARENT_LIGHT 2     // the point the light subpath left its (area, point or spot) light from
+#define GPM_PARENT_INFINITE 3  // a light at infinity (directional, constant, environment map)
 
 // Gather points whose shading normals are further apart than this (cosine) shift no photons:
 // their tangent frames would not carry the photon's offset over (the reference's |n - n'|^2 < 0.01).
@@ -35,7 +38,8 @@ typedef struct PhotonParent {
   int light;
   Bsdf b;     // surface: its BSDF, shading frame and direction toward the vertex before it
   Frame frame;
-  float3 wo;
+  float3 wo;  // infinite: the direction toward the light
+  float far;  // infinite: a distance that takes any point of the scene out of it
 } PhotonParent;
 
 // The parent of store entry `entry` (vertex j of light subpath `slot`: entry = j * stride + slot),
@@ -49,7 +53,15 @@ inline PhotonParent photon_parent(const SceneData* s, __global const GdrBidirVer
   uint j = entry / stride, slot = entry % stride;
   if (y->depth == 1) {
     GdrLightOrigin o = origins[slot];
-    if (o.light < 0 || light_is_infinite(s, o.light)) return pa;
+    if (o.light < 0) return pa;
+    if (light_is_infinite(s, o.light)) {
+      pa.kind = GPM_PARENT_INFINITE;
+      pa.light = o.light;
+      pa.wo = vload3(0, y->wo);
+      pa.far = 2.5f * s->lights[o.light].scene_radius;
+      pa.ng = (float3)(0.0f);
+      return pa;
+    }
     pa.kind = GPM_PARENT_LIGHT;
     pa.p = vload3(0, o.p);
     pa.ng = vload3(0, o.n);
@@ -105,8 +117,17 @@ inline int photon_shift_target(float3 px, float3 nx, float3 px2, float3 nx2, flo
   return 1;
 }
 
+// The direction from a photon at q toward its parent.
+inline float3 photon_toward_parent(const PhotonParent* pa, float3 q) {
+  return pa->kind == GPM_PARENT_INFINITE ? pa->wo : normalize(pa->p - q);
+}
+
 // The ray from the parent toward the target: its first hit is the offset photon.
 inline void photon_shift_ray(__global GdrRayHit* r, const PhotonParent* pa, float3 target, uint id) {
+  if (pa->kind == GPM_PARENT_INFINITE) {
+    write_ray_hit(r, target + pa->far * pa->wo, -pa->wo, 0.0f, INFINITY, id);
+    return;
+  }
   float3 d = normalize(target - pa->p);
   float3 o = dot(pa->ng, pa->ng) > 0.0f ? leaving_origin(pa->p, pa->ng, d) : pa->p;
   write_ray_hit(r, o, d, 0.0f, INFINITY, id);
@@ -124,9 +145,15 @@ inline void photon_no_ray(__global GdrRayHit* r, uint id) {
 inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 py, float3 ny, float3 phi,
                              const Surface* sy2, float3* phi2, float* ratio) {
   Bsdf by2 = surface_bsdf(s, sy2);
-  float3 w = normalize(py - pa->p), w2 = normalize(sy2->p - pa->p);
+  float3 w2 = -photon_toward_parent(pa, sy2->p);
   Frame f2 = frame_from_normal(sy2->ns);
   if (bsdf_is_delta(&by2) || !sides_agree(-w2, sy2->ng, frame_to_local(&f2, -w2).z)) return 0;
+  if (pa->kind == GPM_PARENT_INFINITE) {
+    *phi2 = phi;
+    *ratio = 1.0f;
+    return 1;
+  }
+  float3 w = normalize(py - pa->p);
   float pdf, pdf2;
   float3 e = photon_parent_eval(s, pa, w, &pdf), e2 = photon_parent_eval(s, pa, w2, &pdf2);
   float g = photon_geometry(pa->p, py, ny), g2 = photon_geometry(pa->p, sy2->p, sy2->ng);

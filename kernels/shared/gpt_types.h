@@ -78,7 +78,7 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_CONNECTIONS, "gbdpt/connections")           /* camera-light vertex connections tried */ \
   X(GPT_COUNTER_FAIL_GLOSSY_CONNECTION, "shift_failures/glossy_connection") /* no reconnection there */ \
   X(GPT_COUNTER_MERGES, "gpm/merges")                       /* G-PM: photons merged at base visible points */ \
-  X(GPT_COUNTER_FAIL_PHOTON_PARENT, "shift_failures/photon_parent") /* delta vertex or light at infinity before it */ \
+  X(GPT_COUNTER_FAIL_PHOTON_PARENT, "shift_failures/photon_parent") /* a delta vertex before the photon */ \
   X(GPT_COUNTER_FAIL_PHOTON_LOST, "shift_failures/photon_lost") /* offset photon outside the radius, or no photon */
 enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };
 

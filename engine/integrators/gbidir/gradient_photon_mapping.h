@@ -10,8 +10,7 @@
 // reconstruction are G-PT's.
 //
 // Left out: the manifold walk the reference takes for a photon whose parent is a delta vertex
-// (such shifts fail, counted in shift_failures/photon_parent, and the base keeps its full weight),
-// and photons from lights at infinity (the same).
+// (such shifts fail, counted in shift_failures/photon_parent, and the base keeps its full weight).
 //
 // Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux as
 // gpt's; radius and radius_alpha as pm's; recon, recon_solver, alpha: the reconstruction
