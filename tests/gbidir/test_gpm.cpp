@@ -2,10 +2,13 @@
 // max_depth 6), against a long path-traced reference (4096 spp, seed 500): the error of its
 // gradients (dx, dy plus the differences of the directly seen emission, kept out of them) against
 // the reference's neighbour differences, and the error of its primal and of its reconstruction,
-// fall as the passes grow (4, 16, 64: the radius shrinks and the estimates add up); its primal
-// agrees with pm's at equal passes (the mean brightness of 8 runs each). The runs are fixed by
-// their seeds; the bounds hold with margin over what those runs measure (see the comments), so
-// the tests fail on a wrong shift, weight or normalization rather than by chance.
+// fall as the passes grow (4, 16, 64: the radius shrinks and the estimates add up); its gradients
+// beat the differences of pm's image at equal passes (the photon shift correlates the pair); the
+// mean of 8 runs' gradients lies close to the reference's differences (no bias the shift adds);
+// its primal agrees with pm's at equal passes (the mean brightness of 8 runs each). The runs are
+// fixed by their seeds; the bounds hold with margin over what those runs measure (see the
+// comments), so the tests fail on a wrong shift, weight or normalization rather than by chance.
+// Also: failed shifts are counted by reason, and the parameters are checked.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,9 +19,9 @@
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_photon_mapping.h"
 #include "scene/load_scene.h"
+#include "support/agreement.h"
 #include "support/gradient_unbiased.h"
 #include "support/render.h"
-#include "support/agreement.h"
 #include "support/test_scenes.h"
 #include "util/error.h"
 
