@@ -59,12 +59,13 @@ __kernel void pt_route(GdrPtParams params, uint count, __global const GdrRayHit*
 
 // A hit of a material of BSDF type `type`: emission, next-event estimation with MIS, then the
 // BSDF sample that continues the path (Russian roulette). `direct`: the queue was not routed, and
-// a miss is added here.
-inline void pt_shade_hit(GdrPtParams params, uint q, int type, int direct, __global const GdrRayHit* rays_in,
-                         __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
-                         __global GdrRay* shadow_rays, __global float4* shadow_values,
-                         __global GdrPathState* paths, __global float4* film, __global uint* counters,
-                         const SceneData* sd) {
+// a miss is added here. Always inlined: called from one kernel per material, PoCL would otherwise
+// keep the call (and shade about 9% slower).
+__attribute__((always_inline)) inline void pt_shade_hit(
+    GdrPtParams params, uint q, int type, int direct, __global const GdrRayHit* rays_in, __global const uint* queue_in,
+    __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
+    __global float4* shadow_values, __global GdrPathState* paths, __global float4* film, __global uint* counters,
+    const SceneData* sd) {
   if (path_no_segments(params.max_depth)) return;
   SceneData s = *sd;
   __global uint* nonfinite = &counters[PT_COUNTER_NONFINITE];
