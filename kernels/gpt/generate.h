@@ -40,8 +40,13 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   chains[g].open = 0;
 #endif
   for (int j = 0; j < GPT_ACC_COUNT; ++j) acc[pixel * GPT_ACC_COUNT + j] = (float4)(0.0f);
+  // The offsets' camera rays, queued with one atomic for the group (four on one counter from every
+  // work item would serialize them).
+  CameraRay rays[GPT_OFFSETS];
+  int traced[GPT_OFFSETS], count = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     GptOffsetState os;
+    traced[k] = 0;
     os.throughput[0] = os.throughput[1] = os.throughput[2] = 1.0f;
     os.ratio = 1.0f;
 #if defined(GDR_GBDPT)
@@ -74,10 +79,16 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
 #if defined(GDR_GBDPT)
       os.mis = gbdpt_sums_start(&cam, camera_cos_theta(&cam, ro.d));
 #endif
-      uint slot = atomic_inc(&counters[GPT_COUNTER_OFFSET_RAYS]);
-      write_camera_ray(&offset_rays[slot], &ro, g * GPT_OFFSETS + (uint)k);
+      rays[k] = ro;
+      traced[k] = 1;
+      ++count;
     }
     offsets[g * GPT_OFFSETS + k] = os;
+  }
+  if (count == 0) return;
+  uint slot = atomic_add(&counters[GPT_COUNTER_OFFSET_RAYS], (uint)count);
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (traced[k]) write_camera_ray(&offset_rays[slot++], &rays[k], g * GPT_OFFSETS + (uint)k);
   }
 }
 

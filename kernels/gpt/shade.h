@@ -216,8 +216,11 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
 #else
     float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
 #endif
-    int base_ray_needed = 0;
+    int base_ray_needed = 0, own_rays = 0;
+    int own_ray_of[GPT_OFFSETS];  // offset k's own shadow ray toward lights[k]
+    LightSample lights[GPT_OFFSETS];
     for (int k = 0; k < GPT_OFFSETS; ++k) {
+      own_ray_of[k] = 0;
       // The offset's partner under light sampling reconnects to the same light point: the ratio
       // of the pair is its prefix ratio. The offset's vertex: its BSDF bo, its directions wol
       // (toward its previous vertex) and wil (toward its light point lo), its normal ng_o.
@@ -261,8 +264,9 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
         if (own_ray) {
           c_off = checked(c_off, nonfinite);
           pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(c_off, 0.0f);
-          uint slot = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-          write_light_ray(&shadow_rays[slot], so[k].p, so[k].ng, lo.wi, lo.dist, GPT_SHADOW_ID(g, 1 + k));
+          own_ray_of[k] = 1;
+          lights[k] = lo;
+          ++own_rays;
         }
       }
       float3 cb = checked(w_base * c_base, nonfinite);
@@ -274,10 +278,16 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
         base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
       }
     }
-    if (base_ray_needed) {
-      uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-      write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
+    // The group's shadow rays, queued with one atomic (one per ray from every work item would
+    // serialize them on the counter).
+    uint n = (uint)(own_rays + base_ray_needed);
+    uint r = n ? atomic_add(&counters[GPT_COUNTER_SHADOW_RAYS], n) : 0u;
+    for (int k = 0; k < GPT_OFFSETS; ++k) {
+      if (own_ray_of[k]) {
+        write_light_ray(&shadow_rays[r++], so[k].p, so[k].ng, lights[k].wi, lights[k].dist, GPT_SHADOW_ID(g, 1 + k));
+      }
     }
+    if (base_ray_needed) write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
   }
 #endif
 

@@ -62,7 +62,11 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
   }
 #endif
 
+  // The offsets' rays (own or reconnection), queued with one atomic each kind for the group.
+  float3 ray_p[GPT_OFFSETS], ray_ng[GPT_OFFSETS], ray_w[GPT_OFFSETS];
+  int kind[GPT_OFFSETS], own = 0, reconnects = 0;  // kind: 0 none, 1 own ray, 2 reconnection
   for (int k = 0; k < GPT_OFFSETS; ++k) {
+    kind[k] = 0;
     __global GptOffsetState* og = &offsets[g * GPT_OFFSETS + k];
     if (og->mode != GPT_MODE_TRACE) continue;
     GptOffsetState o = *og;
@@ -84,16 +88,23 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     o.glossy_next_only = glossy_next_only;
     vstore3(y.su.p, 0, o.prev_pos);
     vstore3(wiy_w, 0, o.dir);
-    uint id = g * GPT_OFFSETS + (uint)k;
     if (reconnect) {
       o.mode = GPT_MODE_RECONNECTING;
       o.visible = 0;
-      uint r = atomic_inc(&counters[GPT_COUNTER_RECONNECT_RAYS]);
-      write_segment_ray(&reconnect_rays[r], y.su.p, y.su.ng, next.p, id);
-    } else {
-      uint r = atomic_inc(&counters[GPT_COUNTER_OFFSET_RAYS]);
-      spawn_ray(&offset_rays[r], y.su.p, y.su.ng, wiy_w, id);
     }
+    kind[k] = reconnect ? 2 : 1;
+    own += !reconnect;
+    reconnects += reconnect;
+    ray_p[k] = y.su.p;
+    ray_ng[k] = y.su.ng;
+    ray_w[k] = wiy_w;
     *og = o;
+  }
+  uint r_own = own ? atomic_add(&counters[GPT_COUNTER_OFFSET_RAYS], (uint)own) : 0u;
+  uint r_rec = reconnects ? atomic_add(&counters[GPT_COUNTER_RECONNECT_RAYS], (uint)reconnects) : 0u;
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    uint id = g * GPT_OFFSETS + (uint)k;
+    if (kind[k] == 2) write_segment_ray(&reconnect_rays[r_rec++], ray_p[k], ray_ng[k], next.p, id);
+    if (kind[k] == 1) spawn_ray(&offset_rays[r_own++], ray_p[k], ray_ng[k], ray_w[k], id);
   }
 }
