@@ -38,14 +38,18 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
   float2 ox = (float2)(cx.others, gbdpt_connection_all_others(&cx, rec.all_dvcm[0], rec.all_dvc[0]));
 
   for (int i = 0; i < GPT_PEND_COUNT; ++i) pend[g * GPT_PEND_COUNT + i] = (float4)(0.0f);
-  int base_ray_needed = 0;
+  // The group's shadow rays and failures go to the counters with one atomic each (one per ray from
+  // every work item would serialize them): offset k's own segment, own_from[k] to own_to[k].
+  int base_ray_needed = 0, own_rays = 0, glossy = 0, own_ray_of[GPT_OFFSETS];
+  float3 own_from[GPT_OFFSETS], own_ng[GPT_OFFSETS], own_to[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     int state = rec.state[k], formed = 0;
     BidirConnection cy;
     cy.value = (float3)(0.0f);
     cy.others = 0.0f;
+    own_ray_of[k] = 0;
     if (state == GBDPT_OFFSET_OWN && !y_diffuse) state = GBDPT_OFFSET_GLOSSY;
-    if (state == GBDPT_OFFSET_GLOSSY) atomic_inc(&counters[GPT_COUNTER_FAIL_GLOSSY_CONNECTION]);
+    glossy += state == GBDPT_OFFSET_GLOSSY;
     if (state == GBDPT_OFFSET_SHARED && all(vload3(0, rec.offset[k].wo) == vload3(0, rec.base.wo))) {
       cy = bidir_connection_rejoined(&cx, &rec.offset[k], &o);
       formed = 1;
@@ -67,12 +71,19 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
       base_ray_needed = 1;
     } else {
       pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)] = (float4)(co, 0.0f);
-      uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-      write_segment_ray(&shadow_rays[r], cy.from, cy.from_ng, cy.to, GPT_SHADOW_ID(g, 1 + k));
+      own_ray_of[k] = 1;
+      own_from[k] = cy.from;
+      own_ng[k] = cy.from_ng;
+      own_to[k] = cy.to;
+      ++own_rays;
     }
   }
-  if (base_ray_needed) {
-    uint r = atomic_inc(&counters[GPT_COUNTER_SHADOW_RAYS]);
-    write_segment_ray(&shadow_rays[r], cx.from, cx.from_ng, cx.to, GPT_SHADOW_ID(g, 0));
+  if (glossy) atomic_add(&counters[GPT_COUNTER_FAIL_GLOSSY_CONNECTION], (uint)glossy);
+  uint n = (uint)(own_rays + base_ray_needed);
+  uint r = n ? atomic_add(&counters[GPT_COUNTER_SHADOW_RAYS], n) : 0u;
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (!own_ray_of[k]) continue;
+    write_segment_ray(&shadow_rays[r++], own_from[k], own_ng[k], own_to[k], GPT_SHADOW_ID(g, 1 + k));
   }
+  if (base_ray_needed) write_segment_ray(&shadow_rays[r], cx.from, cx.from_ng, cx.to, GPT_SHADOW_ID(g, 0));
 }

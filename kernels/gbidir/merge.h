@@ -112,7 +112,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   }
   float3 sum_base[GPT_OFFSETS], sum_off[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) sum_base[k] = sum_off[k] = (float3)(0.0f);
-  uint r = 4u * (ray_starts[q] - ray_starts[first]), e, merged = 0;
+  // Counted per group, one atomic each at the end (not one per photon on one counter).
+  uint r = 4u * (ray_starts[q] - ray_starts[first]), e, merged = 0, orphans = 0, lost = 0;
   float r2 = opts.radius * opts.radius;
   PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
@@ -125,7 +126,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
     if (!(max3(cb) > 0.0f)) continue;
     ++merged;
     PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
-    if (pa.kind == GPM_PARENT_NONE) atomic_add(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT], (uint)(open[0] + open[1] + open[2] + open[3]));
+    if (pa.kind == GPM_PARENT_NONE) orphans += (uint)(open[0] + open[1] + open[2] + open[3]);
     Surface sy = surface_at(&s, y.prim, y.u, y.v);
     for (int k = 0; k < GPT_OFFSETS; ++k) {
       float w = 1.0f;
@@ -150,11 +151,13 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
             }
           }
         }
-        if (!shifted) atomic_inc(&counters[GPT_COUNTER_FAIL_PHOTON_LOST]);
+        lost += !shifted;
       }
       sum_base[k] += w * cb;
     }
   }
+  if (orphans) atomic_add(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT], orphans);
+  if (lost) atomic_add(&counters[GPT_COUNTER_FAIL_PHOTON_LOST], lost);
   if (merged == 0) return;
   atomic_add(&counters[GPT_COUNTER_MERGES], merged);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
