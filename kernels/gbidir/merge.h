@@ -54,15 +54,20 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   GbdptCameraVertex rec = records[connectable[q]];
   Surface sx = surface_at(&s, rec.base.prim, rec.base.u, rec.base.v);
   Surface so[GPT_OFFSETS];
+  int shifting = 0;  // some offset can take a shifted photon (else no parent is looked up)
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    if (rec.state[k] == GBDPT_OFFSET_OWN) so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
+    if (rec.state[k] != GBDPT_OFFSET_OWN) continue;
+    so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
+    shifting = 1;
   }
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
   PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
     GdrBidirVertex y = store[e];
     if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
-    PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
+    PhotonParent pa;
+    pa.kind = GPM_PARENT_NONE;
+    if (shifting) pa = photon_parent(&s, store, origins, stride, e, &y);
     for (int k = 0; k < GPT_OFFSETS && r < ray_capacity; ++k, ++r) {
       float3 target;
       if (rec.state[k] == GBDPT_OFFSET_OWN && pa.kind != GPM_PARENT_NONE &&
@@ -98,7 +103,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   Surface so[GPT_OFFSETS];
   Bsdf bo[GPT_OFFSETS];
   Frame fo[GPT_OFFSETS];
-  int open[GPT_OFFSETS];
+  int open[GPT_OFFSETS], opened = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     open[k] = rec.state[k] == GBDPT_OFFSET_OWN;
     if (!open[k]) continue;
@@ -109,6 +114,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       open[k] = 0;
       atomic_inc(&counters[GPT_COUNTER_FAIL_LOBE]);
     }
+    opened += open[k];
   }
   float3 sum_base[GPT_OFFSETS], sum_off[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) sum_base[k] = sum_off[k] = (float3)(0.0f);
@@ -125,9 +131,15 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
     float3 cb = beta * photon_merge_value(&bx, &fx, sx.ng, wo_x, vload3(0, y.wo)) * phi;
     if (!(max3(cb) > 0.0f)) continue;
     ++merged;
-    PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
-    if (pa.kind == GPM_PARENT_NONE) orphans += (uint)(open[0] + open[1] + open[2] + open[3]);
-    Surface sy = surface_at(&s, y.prim, y.u, y.v);
+    // The photon's parent and surface, where some offset can take it shifted.
+    PhotonParent pa;
+    pa.kind = GPM_PARENT_NONE;
+    Surface sy;
+    if (opened) {
+      pa = photon_parent(&s, store, origins, stride, e, &y);
+      if (pa.kind == GPM_PARENT_NONE) orphans += (uint)opened;
+      else sy = surface_at(&s, y.prim, y.u, y.v);
+    }
     for (int k = 0; k < GPT_OFFSETS; ++k) {
       float w = 1.0f;
       if (open[k] && pa.kind != GPM_PARENT_NONE) {

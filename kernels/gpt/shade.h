@@ -300,8 +300,8 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
 #endif
 #if defined(GDR_GPM)
   // The visible point: the base's first rough vertex, where the group ends. Its offsets are each
-  // at a vertex of their own (nothing joins before a rough vertex); whether they can merge there
-  // the merge decides.
+  // at a vertex of their own (nothing joins before a rough vertex), recorded as such whatever
+  // their roughness (threshold -1); whether they can merge there the merge decides.
   if (!bsdf_is_delta(&b)) {
     if (gpm_merges_at(st->depth, params.path.max_depth)) {
       records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, 1, o, so, wo_off, -1.0f);

@@ -76,20 +76,10 @@ struct Box {
 // Two diffuse spheres on a diffuse plane under a uniform sky (an environment map of one value):
 // every photon's first segment comes from a light at infinity. 32 x 24 pixels.
 Box& sky_box() {
-  static std::unique_ptr<Box> b = std::make_unique<Box>(test::scene_with_environment(8, 4, std::vector<float>(32, 1.0f),
-      R"(<scene version="3.0.0">
-  <sensor type="perspective"><float name="fov" value="40"/>
-    <transform name="to_world"><lookat origin="0, 1, 6" target="0, 0.5, 0" up="0, 1, 0"/></transform>
-    <film type="hdrfilm"><integer name="width" value="32"/><integer name="height" value="24"/></film>
-  </sensor>
-  <emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>
-  <shape type="sphere"><point name="center" x="-1" y="1" z="0"/><float name="radius" value="1"/>
-    <bsdf type="diffuse"/></shape>
-  <shape type="sphere"><point name="center" x="1.2" y="1" z="0"/><float name="radius" value="1"/>
-    <bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.6, 0.3"/></bsdf></shape>
-  <shape type="rectangle"><transform name="to_world"><scale value="5"/><rotate x="1" angle="-90"/></transform>
-    <bsdf type="diffuse"/></shape>
-</scene>)"));
+  static std::unique_ptr<Box> b = std::make_unique<Box>(test::scene_with_environment(
+      8, 4, std::vector<float>(32, 1.0f),
+      test::spheres_on_plane_xml(R"(<emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>)",
+                                 R"(<bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.6, 0.3"/></bsdf>)")));
   return *b;
 }
 

@@ -29,6 +29,24 @@ inline Scene scene_with_environment(int w, int h, const std::vector<float>& grey
   return scene;
 }
 
+// Two unit spheres on a 10 x 10 plane seen from (0, 1, 6), 32x24 pixels, lit by `emitter` (its
+// XML); the left sphere and the plane diffuse, the right sphere `right_bsdf` (XML).
+inline std::string spheres_on_plane_xml(const std::string& emitter, const std::string& right_bsdf) {
+  return R"(<scene version="3.0.0">
+  <sensor type="perspective"><float name="fov" value="40"/>
+    <transform name="to_world"><lookat origin="0, 1, 6" target="0, 0.5, 0" up="0, 1, 0"/></transform>
+    <film type="hdrfilm"><integer name="width" value="32"/><integer name="height" value="24"/></film>
+  </sensor>
+  )" + emitter + R"(
+  <shape type="sphere"><point name="center" x="-1" y="1" z="0"/><float name="radius" value="1"/>
+    <bsdf type="diffuse"/></shape>
+  <shape type="sphere"><point name="center" x="1.2" y="1" z="0"/><float name="radius" value="1"/>
+    )" + right_bsdf + R"(</shape>
+  <shape type="rectangle"><transform name="to_world"><scale value="5"/><rotate x="1" angle="-90"/></transform>
+    <bsdf type="diffuse"/></shape>
+</scene>)";
+}
+
 // A bright patch (importance sampled by luminance) over a dim sky: a diffuse and a rough metal
 // sphere on a plane, 32x24 pixels.
 inline Scene envmap_scene() {
@@ -36,20 +54,11 @@ inline Scene envmap_scene() {
   for (int y = 3; y < 6; ++y) {
     for (int x = 10; x < 13; ++x) sky[y * 32 + x] = 40.0f;
   }
-  return scene_with_environment(32, 16, sky, R"(<scene version="3.0.0">
-  <sensor type="perspective"><float name="fov" value="40"/>
-    <transform name="to_world"><lookat origin="0, 1, 6" target="0, 0.5, 0" up="0, 1, 0"/></transform>
-    <film type="hdrfilm"><integer name="width" value="32"/><integer name="height" value="24"/></film>
-  </sensor>
-  <emitter type="envmap"><string name="filename" value="sky.exr"/>
-    <transform name="to_world"><rotate y="1" angle="30"/></transform></emitter>
-  <shape type="sphere"><point name="center" x="-1" y="1" z="0"/><float name="radius" value="1"/>
-    <bsdf type="diffuse"/></shape>
-  <shape type="sphere"><point name="center" x="1.2" y="1" z="0"/><float name="radius" value="1"/>
-    <bsdf type="roughconductor"><float name="alpha" value="0.3"/></bsdf></shape>
-  <shape type="rectangle"><transform name="to_world"><scale value="5"/><rotate x="1" angle="-90"/></transform>
-    <bsdf type="diffuse"/></shape>
-</scene>)");
+  return scene_with_environment(
+      32, 16, sky,
+      spheres_on_plane_xml(R"(<emitter type="envmap"><string name="filename" value="sky.exr"/>
+    <transform name="to_world"><rotate y="1" angle="30"/></transform></emitter>)",
+                           R"(<bsdf type="roughconductor"><float name="alpha" value="0.3"/></bsdf>)"));
 }
 
 // A smooth plastic sphere filling the frame (24x18 pixels) under a sky of scattered bright

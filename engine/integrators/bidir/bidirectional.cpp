@@ -89,6 +89,12 @@ int bdpt_segments(int max_depth) {
   return max_depth < 0 || max_depth > kBdptMaxSegments ? kBdptMaxSegments : max_depth;
 }
 
+void warn_beyond_store(const char* integrator, int max_depth) {
+  if (bdpt_segments(max_depth) == max_depth) return;
+  log::warn(integrator, " renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", max_depth,
+            " asked for more): the light-vertex store's bound");
+}
+
 const char* bidir_technique_name(int technique) {
   switch (technique) {
     case BIDIR_BDPT: return "bdpt";
@@ -149,10 +155,7 @@ void Bidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample,
 }
 
 RenderResult Bidirectional::render(const RenderSettings& settings) {
-  if (technique() != BIDIR_LT && bdpt_segments(settings.max_depth) != settings.max_depth) {
-    log::warn("bdpt, pm and vcm render paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
-              " asked for more): the light-vertex store's bound");
-  }
+  if (technique() != BIDIR_LT) warn_beyond_store(bidir_technique_name(technique()), settings.max_depth);
   return render_radiance(in_.context, settings, film_, aux_, subpaths_.capacity(), [&](uint32_t sample, uint32_t first, uint32_t count) {
     trace_chunk(settings, sample, first, count);
   });

@@ -74,6 +74,8 @@ GdrBidirOptions merging_pass_options(const BidirSettings& settings, const Scene&
 
 // bdpt's, pm's and vcm's longest path for the settings' max_depth (segments).
 int bdpt_segments(int max_depth);
+// Warns, naming `integrator`, where max_depth asks for longer paths than bdpt_segments allows.
+void warn_beyond_store(const char* integrator, int max_depth);
 // Mitsuba's max_depth: a light subpath's first vertex connected to the camera is 2 segments.
 inline bool light_subpaths_allowed(int max_depth) { return max_depth < 0 || max_depth >= 2; }
 

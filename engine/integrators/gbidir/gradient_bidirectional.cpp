@@ -1,8 +1,6 @@
 #include "integrators/gbidir/gradient_bidirectional.h"
 
 #include "integrators/bidir/bidirectional.h"
-#include "util/error.h"
-#include "util/log.h"
 
 namespace gdr {
 namespace {
@@ -19,13 +17,8 @@ GdrBidirOptions light_options() {
 const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux"};
 
 GptSettings gbdpt_settings(const IntegratorParams& params) {
-  GptSettings s = gpt_shift_settings(params);
-  if (s.shift == GPT_SHIFT_MANIFOLD) {
-    throw Error("integrator parameter shift: gbdpt shifts by hybrid or replay (a manifold walk's offsets carry no "
-                "bidirectional MIS sums)");
-  }
-  s.aux = params.flag("aux", false);
-  return s;
+  return gpt_settings_without_manifold(
+      params, "gbdpt shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
 }
 
 GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSettings& gpt,
@@ -57,10 +50,7 @@ void GradientBidirectional::end_pass() {
 }
 
 RenderResult GradientBidirectional::render(const RenderSettings& settings) {
-  if (bdpt_segments(settings.max_depth) != settings.max_depth) {
-    log::warn("gbdpt renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
-              " asked for more): the light-vertex store's bound");
-  }
+  warn_beyond_store("gbdpt", settings.max_depth);
   return GradientPathTracer::render(settings);
 }
 

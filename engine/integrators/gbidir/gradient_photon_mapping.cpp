@@ -1,20 +1,12 @@
 #include "integrators/gbidir/gradient_photon_mapping.h"
 
-#include "util/error.h"
-#include "util/log.h"
-
 namespace gdr {
 
 const std::vector<std::string> kGpmParams = {"shift", "shift_threshold", "aux", "radius", "radius_alpha"};
 
 GptSettings gpm_settings(const IntegratorParams& params) {
-  GptSettings s = gpt_shift_settings(params);
-  if (s.shift == GPT_SHIFT_MANIFOLD) {
-    throw Error("integrator parameter shift: gpm shifts its camera subpaths by hybrid or replay (they end at "
-                "their first rough vertex, before any manifold walk)");
-  }
-  s.aux = params.flag("aux", false);
-  return s;
+  return gpt_settings_without_manifold(params, "gpm shifts its camera subpaths by hybrid or replay (they end at "
+                                               "their first rough vertex, before any manifold walk)");
 }
 
 GradientPhotonMapping::GradientPhotonMapping(const RenderInputs& in, const GptSettings& gpt,
@@ -33,18 +25,15 @@ void GradientPhotonMapping::trace_chunk(const RenderSettings& settings, uint32_t
   const bool light = light_subpaths_allowed(settings.max_depth) && p.path.light_count > 0;
   if (light) subpaths_.trace_light(p.path, o, BidirSink{groups_.acc(), splats_});
   const PhotonGrid grid = subpaths_.grid();
-  groups_.trace(p, PrimarySamples(), aux(), nullptr, [&](cl_uint recorded) {
-    if (light) shifts_.merge(p, o, recorded, groups_, grid);
-  });
+  GradientGroups::RecordsStep merge;
+  if (light) merge = [&](cl_uint recorded) { shifts_.merge(p, o, recorded, groups_, grid); };
+  groups_.trace(p, PrimarySamples(), aux(), nullptr, merge);
   groups_.report(in_.context.stats());
   subpaths_.report(in_.context.stats());
 }
 
 RenderResult GradientPhotonMapping::render(const RenderSettings& settings) {
-  if (bdpt_segments(settings.max_depth) != settings.max_depth) {
-    log::warn("gpm renders paths of at most ", kBdptMaxSegments, " segments (max_depth ", settings.max_depth,
-              " asked for more): the light-vertex store's bound");
-  }
+  warn_beyond_store("gpm", settings.max_depth);
   return GradientPathTracer::render(settings);
 }
 

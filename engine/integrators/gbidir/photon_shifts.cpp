@@ -23,17 +23,12 @@ PhotonShifts::PhotonShifts(const RenderInputs& in, const GradientGroups& groups)
       shift_rays_(in.context, kMaxShiftRays, kRayQueueFlags) {}
 
 void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count,
-                               GradientGroups& groups, const PhotonGrid& g) {
+                               size_t merged, GradientGroups& groups, const PhotonGrid& g) {
   rays_
       .args(p, o, first, count, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted,
             g.buckets, g.origins, g.stride, starts_, shift_rays_, cl_uint(kMaxShiftRays), in_.device_scene)
       .run(count);
-  size_t photons = 0;
-  {
-    auto m = starts_.map(size_t(first) + count + 1);
-    photons = m.data()[first + count] - m.data()[first];
-  }
-  intersect(in_.embree, shift_rays_, std::min(kMaxShiftRays, photons * GPT_OFFSETS), false, "photon_shift");
+  intersect(in_.embree, shift_rays_, std::min(kMaxShiftRays, merged * GPT_OFFSETS), false, "photon_shift");
   groups.counters().reset();
   merge_
       .args(p, o, first, count, groups.connectable(), groups.records(), groups.bases(), g.store, g.points, g.starts,
@@ -55,7 +50,7 @@ void PhotonShifts::merge(const GdrGptParams& p, const GdrBidirOptions& o, cl_uin
   if (total == 0) return;
   const size_t per_slice = kMaxShiftRays / GPT_OFFSETS;
   if (total <= per_slice) {
-    merge_slice(p, o, 0, recorded, groups, g);
+    merge_slice(p, o, 0, recorded, total, groups, g);
     return;
   }
   // Slices of whole groups whose photons' rays fit (a visible point with more photons than that,
@@ -68,7 +63,7 @@ void PhotonShifts::merge(const GdrGptParams& p, const GdrBidirOptions& o, cl_uin
   for (cl_uint first = 0; first < recorded;) {
     cl_uint end = first + 1;
     while (end < recorded && starts[end + 1] - starts[first] <= per_slice) ++end;
-    merge_slice(p, o, first, end - first, groups, g);
+    merge_slice(p, o, first, end - first, starts[end] - starts[first], groups, g);
     first = end;
   }
 }

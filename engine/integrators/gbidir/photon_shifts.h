@@ -19,8 +19,9 @@ class PhotonShifts {
              const PhotonGrid& photons);
 
  private:
-  // Groups [first, first + count) of the recorded list, whose rays start at starts[first].
-  void merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count,
+  // Groups [first, first + count) of the recorded list, whose rays start at starts[first];
+  // `merged`: their photons (four rays each).
+  void merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count, size_t merged,
                    GradientGroups& groups, const PhotonGrid& photons);
 
   RenderInputs in_;

@@ -2,6 +2,7 @@
 
 #include "render/progressive_loop.h"
 #include "render/wavefront/chunks.h"
+#include "util/error.h"
 
 namespace gdr {
 
@@ -11,6 +12,12 @@ const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", 
 GptSettings gpt_settings(const IntegratorParams& params) {
   GptSettings s = gpt_shift_settings(params);
   s.aux = params.flag("aux", false);
+  return s;
+}
+
+GptSettings gpt_settings_without_manifold(const IntegratorParams& params, const std::string& why) {
+  GptSettings s = gpt_settings(params);
+  if (s.shift == GPT_SHIFT_MANIFOLD) throw Error("integrator parameter shift: " + why);
   return s;
 }
 

@@ -65,7 +65,7 @@ const std::vector<cl_uint>& PathTracer::shade(const GdrPtParams& params, int cur
   }
   for (const MaterialQueues::Queue& q : materials_.route(active)) {
     q.kernel
-        ->args(params, q.count, cl_uint(0), cl_int(materials_.direct()), *q.entries, queues_.rays[cur],
+        ->args(params, q.count, cl_int(materials_.direct()), *q.entries, queues_.rays[cur],
                queues_.slots[cur], queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, shadow_values_,
                paths_, film_["radiance"], counters_.buffer(), in_.device_scene)
         .run(q.count);

@@ -6,12 +6,12 @@ namespace gdr {
 
 MaterialQueues::MaterialQueues(Context& ctx, const Scene& scene, const KernelFactory& kernels,
                                const std::string& program, const std::string& stage, size_t capacity)
-    : ctx_(ctx), primitives_(ctx) {
+    : primitives_(ctx) {
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
     if (scene.features.bsdf[t]) kinds_.push_back({t, kernels.make(program, stage + "_" + bsdf_type_name(t)), {}});
   }
-  keys_ = Buffer<cl_uint>(ctx, capacity);
-  if (kinds_.size() > 1) {
+  if (!direct()) {
+    keys_ = Buffer<cl_uint>(ctx, capacity);
     scratch_ = Buffer<cl_uint>(ctx, capacity);
     for (Kind& k : kinds_) k.entries = Buffer<cl_uint>(ctx, capacity);
   }
@@ -22,7 +22,7 @@ const std::vector<MaterialQueues::Queue>& MaterialQueues::route(cl_uint n) {
   if (n == 0) return queues_;
   for (Kind& k : kinds_) {
     const cl_uint count = direct() ? n : primitives_.select_key(keys_, n, cl_uint(k.type), scratch_, k.entries);
-    if (count > 0) queues_.push_back({k.type, count, &k.entries, &k.kernel});
+    if (count > 0) queues_.push_back({count, &k.entries, &k.kernel});
   }
   return queues_;
 }

@@ -21,13 +21,13 @@ class MaterialQueues {
                  const std::string& stage, size_t capacity);
 
   struct Queue {
-    int type;                       // BSDF_*
     cl_uint count;                  // entries
     const Buffer<cl_uint>* entries; // their positions in the routed queue (unused when direct)
     Kernel* kernel;
   };
 
-  // The routing kernel's output: each entry's key (BSDF type, or BSDF_TYPE_COUNT for none).
+  // The routing kernel's output: each entry's key (BSDF type, or BSDF_TYPE_COUNT for none); only
+  // where routing is needed (not direct).
   Buffer<cl_uint>& keys() { return keys_; }
   // No routing: the scene has one material type, whose kernel takes the queue as it is.
   bool direct() const { return kinds_.size() == 1; }
@@ -35,7 +35,6 @@ class MaterialQueues {
   const std::vector<Queue>& route(cl_uint n);
 
  private:
-  Context& ctx_;
   struct Kind {
     int type;
     Kernel kernel;
