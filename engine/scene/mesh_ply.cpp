@@ -1,6 +1,7 @@
 // Stanford PLY: ASCII and binary (little and big endian). Reads vertex x y z, optional nx ny nz
 // and u v / s t / texture_u texture_v; face lists of any integer types (fan-triangulated).
 // Other elements and properties are skipped.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -172,8 +173,7 @@ MeshData read_ply(const std::string& path) {
     } else if (key == "element") {
       Element e;
       long long count = -1;
-      words >> e.name >> count;
-      if (count < 0) throw InputError(path, line, "bad element count");
+      if (!(words >> e.name >> count) || count < 0) throw InputError(path, line, "bad element count");
       e.count = static_cast<size_t>(count);
       elements.push_back(e);
     } else if (key == "property") {
@@ -207,6 +207,7 @@ MeshData read_ply(const std::string& path) {
     for (const Element& e : elements) {
       double item = 0;
       for (const Property& p : e.props) item += format == 0 ? 2.0 : static_cast<double>(type_size(p.list ? p.count_type : p.type));
+      if (format == 0) item = std::max(item, 2.0);  // an ASCII item is a non-empty line
       least += item * static_cast<double>(e.count);
       if (e.name == "vertex") memory += 8.0 * sizeof(float) * static_cast<double>(e.count);
       if (e.name == "face") memory += 3.0 * sizeof(int) * static_cast<double>(e.count);
@@ -291,7 +292,7 @@ MeshData read_ply(const std::string& path) {
           mesh.indices.push_back(static_cast<int>(poly[k + 1]));
         }
       }
-    } else {
+    } else if (format == 0 || !e.props.empty()) {  // binary items without properties take no bytes
       for (size_t item = 0; item < e.count; ++item) {
         body.begin_item();
         for (const Property& p : e.props) {
