@@ -44,6 +44,13 @@ std::vector<IntegratorEntry> make_registry() {
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<GradientPhotonMapping>(in, gpm_settings(p), p);
        }},
+      {"gvcm", "gradient-domain vertex connection and merging (Sun et al. 2017): gbdpt's connections and merges with "
+               "the pass's photons shifted to the offsets, weighted over every strategy of both paths, the radius "
+               "shrinking by pass, Poisson reconstruction",
+       true, join(kGvcmParams, kReconParams), {"gvcm"},
+       [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
+         return std::make_unique<GradientBidirectional>(in, gvcm_settings(p), p, gvcm_photon_settings(p));
+       }},
       {"lt", "light tracer: light subpaths connected to the camera and splatted, emission seen directly by camera rays",
        false, kLtParams, {"ptracer", "lt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {

@@ -14,6 +14,15 @@ inline int gbdpt_connects_at(int depth, int max_depth) { return max_depth < 0 ||
 // Whether a visible point of `depth` scatterings before it can merge with a photon (one more
 // segment from the light at least).
 inline int gpm_merges_at(int depth, int max_depth) { return max_depth < 0 || depth + 2 <= max_depth; }
+// Whether G-BDPT's shade step records a rough camera vertex: to connect it, and for G-VCM also to
+// merge there.
+inline int gbdpt_records_at(int depth, int max_depth) {
+#if defined(GDR_GVCM)
+  return gpm_merges_at(depth, max_depth);
+#else
+  return gbdpt_connects_at(depth, max_depth);
+#endif
+}
 
 inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float3 throughput, const GbdptSums* m,
                                    int depth) {
@@ -25,7 +34,7 @@ inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float
   vstore3(throughput, 0, x.throughput);
   x.dvcm = m->dvcm;
   x.dvc = m->dvc;
-  x.dvm = 0.0f;
+  x.dvm = m->dvm;
   x.depth = depth;
   return x;
 }
@@ -42,6 +51,7 @@ inline GbdptCameraVertex gbdpt_camera_vertex(const SceneData* s, const GdrHit* h
   r.base = gbdpt_vertex(h->primID, h->u, h->v, wo, beta, &base->mis, depth);
   r.all_dvcm[0] = base->mis.all_dvcm;
   r.all_dvc[0] = base->mis.all_dvc;
+  r.all_dvm[0] = base->mis.all_dvm;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     float3 thr = vload3(0, o[k].throughput);
     r.ratio[k] = o[k].ratio;
@@ -57,6 +67,7 @@ inline GbdptCameraVertex gbdpt_camera_vertex(const SceneData* s, const GdrHit* h
     }
     r.all_dvcm[1 + k] = o[k].mis.all_dvcm;
     r.all_dvc[1 + k] = o[k].mis.all_dvc;
+    r.all_dvm[1 + k] = o[k].mis.all_dvm;
   }
   return r;
 }

@@ -27,7 +27,7 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
   if (max_depth >= 0 && rec.base.depth + y.depth + 1 > max_depth) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
   __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
-  GdrBidirOptions o = gbdpt_options();
+  GdrBidirOptions o = gbdpt_options(&params);
   // The base's vertex and the light vertex are evaluated once; offsets at the base's vertex share
   // them, and those that also share its direction (joined before it) the whole connection.
   ConnectionEnd ez = connection_end(&s, &rec.base), ey = connection_end(&s, &y);
@@ -35,7 +35,7 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
   if (!bidir_connection_ends(&ez, &rec.base, &ey, &y, &o, &cx)) return;
   atomic_inc(&counters[GPT_COUNTER_CONNECTIONS]);
   int y_diffuse = is_diffuse(&ey.b, params.shift_threshold);
-  float2 ox = (float2)(cx.others, gbdpt_connection_all_others(&cx, rec.all_dvcm[0], rec.all_dvc[0]));
+  float2 ox = (float2)(cx.others, gbdpt_connection_all_others(&cx, rec.all_dvcm[0], rec.all_dvc[0], &o));
 
   for (int i = 0; i < GPT_PEND_COUNT; ++i) pend[g * GPT_PEND_COUNT + i] = (float4)(0.0f);
   // The group's shadow rays and failures go to the counters with one atomic each (one per ray from
@@ -59,7 +59,7 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
       ConnectionEnd eo = connection_end(&s, &rec.offset[k]);
       formed = bidir_connection_ends(&eo, &rec.offset[k], &ey, &y, &o, &cy);
     }
-    float2 oy = formed ? (float2)(cy.others, gbdpt_connection_all_others(&cy, rec.all_dvcm[1 + k], rec.all_dvc[1 + k]))
+    float2 oy = formed ? (float2)(cy.others, gbdpt_connection_all_others(&cy, rec.all_dvcm[1 + k], rec.all_dvc[1 + k], &o))
                        : (float2)(0.0f);
     float2 w = gbdpt_pair_weights(ox, oy, rec.ratio[k], formed);
     float3 cb = checked(w.x * cx.value, nonfinite), co = checked(w.y * cy.value, nonfinite);

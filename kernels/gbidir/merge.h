@@ -8,16 +8,43 @@
 //   gpm_merge        after Embree: base and offset values under the pair weight
 //                    1 / (1 + p(y) |J| / p(x)) (both directions of the pair; a failed shift
 //                    leaves the base weight 1), into the group's accumulators.
+// G-VCM (GDR_GVCM) merges at each rough camera vertex of its groups with the same stage: offsets
+// at the base's vertex merge the same photon, and base and offset share G-VCM's weight over every
+// strategy of both paths (gbidir/weights.h), the offset photon's light-side sums re-aimed with it
+// (photon_shift_sums).
 // All three walk the photons in the same order (bidir/photon_query.h). A slice of the groups at a
 // time: [first, first + count) of `connectable`, its rays from starts[first] on (rays past the
 // buffer's capacity are not traced: their shifts fail).
 #pragma once
 #include "bidir/photon_query.h"
 #include "gbidir/photon_shift.h"
+#include "gbidir/weights.h"
 #include "gradient/accumulators.h"
 #include "path/film.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
+
+// Whether an offset's merge point is a vertex of its own (the photon is shifted there): G-PM's
+// visible points all are; G-VCM's offsets at a glossy vertex of their own too (a merge ends the
+// camera subpath there, so no half vector is copied beyond it).
+inline int merge_own_point(int state) { return state == GBDPT_OFFSET_OWN || state == GBDPT_OFFSET_GLOSSY; }
+
+// The "others" of a merge at camera vertex z (BSDF b, frame f, local direction wo_l toward its
+// subpath) of a photon arriving from wi with sums y_dvcm, y_dvm: G-VCM's, from both sides' sums,
+// without and with light tracing's share (z's all_dvcm, all_dvm); G-PM merges by one strategy.
+#if defined(GDR_GVCM)
+inline float2 gvcm_merge_others(const Bsdf* b, const Frame* f, float3 wo_l, float3 wi, float y_dvcm, float y_dvm,
+                                const GdrBidirVertex* z, float all_dvcm, float all_dvm, const GdrBidirOptions* o) {
+  float3 wi_l = frame_to_local(f, wi);
+  float pdf_fwd = bsdf_pdf(b, wo_l, wi_l), pdf_rev = bsdf_pdf(b, wi_l, wo_l);
+  float light = mis_merge_side(y_dvcm, y_dvm, pdf_fwd, o);
+  return (float2)(light + mis_merge_side(z->dvcm, z->dvm, pdf_rev, o),
+                  light + mis_merge_side(all_dvcm, all_dvm, pdf_rev, o));
+}
+#define MERGE_OTHERS(...) gvcm_merge_others(__VA_ARGS__)
+#else
+#define MERGE_OTHERS(...) ((float2)(0.0f))
+#endif
 
 // A photon of light depth `light_depth` merges at a camera vertex `camera_depth` segments from the
 // camera where the path's light_depth + camera_depth segments are allowed.
@@ -56,7 +83,7 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   Surface so[GPT_OFFSETS];
   int shifting = 0;  // some offset can take a shifted photon (else no parent is looked up)
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    if (rec.state[k] != GBDPT_OFFSET_OWN) continue;
+    if (!merge_own_point(rec.state[k])) continue;
     so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
     shifting = 1;
   }
@@ -70,7 +97,7 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
     if (shifting) pa = photon_parent(&s, store, origins, stride, e, &y);
     for (int k = 0; k < GPT_OFFSETS && r < ray_capacity; ++k, ++r) {
       float3 target;
-      if (rec.state[k] == GBDPT_OFFSET_OWN && pa.kind != GPM_PARENT_NONE &&
+      if (merge_own_point(rec.state[k]) && pa.kind != GPM_PARENT_NONE &&
           photon_shift_target(sx.p, sx.ns, so[k].p, so[k].ns, points[e].xyz, &target)) {
         photon_shift_ray(&rays[r], &pa, target, r);
       } else {
@@ -99,22 +126,35 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   Frame fx = frame_from_normal(sx.ns);
   float3 wo_x = frame_to_local(&fx, vload3(0, rec.base.wo));
   float3 beta = vload3(0, rec.base.throughput) * opts.vm_normalization;
-  // The offsets' visible points: surface, BSDF (none on a delta surface: no estimate there), frame.
+#if defined(GDR_GVCM)
+  GdrBidirOptions mo = gbdpt_options(&params);
+#endif
+  // The offsets' merge points: their own visible points (surface, BSDF: none on a delta surface,
+  // no estimate there; frame), or the base's point where they share it; each toward its previous
+  // vertex.
   Surface so[GPT_OFFSETS];
   Bsdf bo[GPT_OFFSETS];
   Frame fo[GPT_OFFSETS];
-  int open[GPT_OFFSETS], opened = 0;
+  float3 wo_o[GPT_OFFSETS];
+  int own[GPT_OFFSETS], shared[GPT_OFFSETS], opened = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    open[k] = rec.state[k] == GBDPT_OFFSET_OWN;
-    if (!open[k]) continue;
-    so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
-    bo[k] = surface_bsdf(&s, &so[k]);
-    fo[k] = frame_from_normal(so[k].ns);
-    if (bsdf_is_delta(&bo[k])) {
-      open[k] = 0;
-      atomic_inc(&counters[GPT_COUNTER_FAIL_LOBE]);
+    own[k] = merge_own_point(rec.state[k]);
+    shared[k] = rec.state[k] == GBDPT_OFFSET_SHARED;
+    if (shared[k]) {
+      so[k] = sx;
+      bo[k] = bx;
+      fo[k] = fx;
+    } else if (own[k]) {
+      so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
+      bo[k] = surface_bsdf(&s, &so[k]);
+      fo[k] = frame_from_normal(so[k].ns);
+      if (bsdf_is_delta(&bo[k])) {
+        own[k] = 0;
+        atomic_inc(&counters[GPT_COUNTER_FAIL_LOBE]);
+      }
     }
-    opened += open[k];
+    if (own[k] || shared[k]) wo_o[k] = frame_to_local(&fo[k], vload3(0, rec.offset[k].wo));
+    opened += own[k];
   }
   float3 sum_base[GPT_OFFSETS], sum_off[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) sum_base[k] = sum_off[k] = (float3)(0.0f);
@@ -127,10 +167,11 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
     if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
     uint r0 = r;
     r += GPT_OFFSETS;
-    float3 phi = vload3(0, y.throughput);
-    float3 cb = beta * photon_merge_value(&bx, &fx, sx.ng, wo_x, vload3(0, y.wo)) * phi;
+    float3 phi = vload3(0, y.throughput), wi = vload3(0, y.wo);
+    float3 cb = beta * photon_merge_value(&bx, &fx, sx.ng, wo_x, wi) * phi;
     if (!(max3(cb) > 0.0f)) continue;
     ++merged;
+    float2 ox = MERGE_OTHERS(&bx, &fx, wo_x, wi, y.dvcm, y.dvm, &rec.base, rec.all_dvcm[0], rec.all_dvm[0], &mo);
     // The photon's parent and surface, where some offset can take it shifted.
     PhotonParent pa;
     pa.kind = GPM_PARENT_NONE;
@@ -141,31 +182,50 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       else sy = surface_at(&s, y.prim, y.u, y.v);
     }
     for (int k = 0; k < GPT_OFFSETS; ++k) {
-      float w = 1.0f;
-      if (open[k] && pa.kind != GPM_PARENT_NONE) {
-        int shifted = 0;
+      // The offset's merge: its value co, its pdf ratio to the base's and its "others".
+      int formed = 0;
+      float3 co = (float3)(0.0f);
+      float ratio = 0.0f;
+      float2 oy = (float2)(0.0f);
+      if (shared[k]) {
+        // At the base's point: the same photon.
+        co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
+             photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi) * phi;
+        formed = max3(co) > 0.0f;
+        ratio = rec.ratio[k];
+        if (formed) {
+          oy = MERGE_OTHERS(&bo[k], &fo[k], wo_o[k], wi, y.dvcm, y.dvm, &rec.offset[k], rec.all_dvcm[1 + k],
+                            rec.all_dvm[1 + k], &mo);
+        }
+      } else if (own[k] && pa.kind != GPM_PARENT_NONE) {
         GdrRayHit h;
         h.hit.geomID = GDR_INVALID_ID;
         if (r0 + (uint)k < ray_capacity) h = rays[r0 + (uint)k];
         if (h.hit.geomID != GDR_INVALID_ID) {
           Surface sy2 = surface_at(&s, h.hit.primID, h.hit.u, h.hit.v);
           float3 d = sy2.p - so[k].p, phi2;
-          float ratio;
-          if (dot(d, d) <= r2 && photon_shift_eval(&s, &pa, sy.p, sy.ng, phi, &sy2, &phi2, &ratio)) {
-            float3 wo_o = frame_to_local(&fo[k], vload3(0, rec.offset[k].wo));
-            float3 co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
-                        photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o, photon_toward_parent(&pa, sy2.p)) * phi2;
-            if (max3(co) > 0.0f) {
-              w = 1.0f / (1.0f + rec.ratio[k] * ratio);
-              if (!isfinite(w)) w = 1.0f;
-              else sum_off[k] += w * co;
-              shifted = 1;
+          float photon_ratio;
+          if (dot(d, d) <= r2 && photon_shift_eval(&s, &pa, sy.p, sy.ng, phi, &sy2, &phi2, &photon_ratio)) {
+            float3 wi2 = photon_toward_parent(&pa, sy2.p);
+            co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
+                 photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
+            formed = max3(co) > 0.0f;
+            ratio = rec.ratio[k] * photon_ratio;
+#if defined(GDR_GVCM)
+            if (formed) {
+              float y2_dvcm, y2_dvm;
+              photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, &s, &mo, &y2_dvcm, &y2_dvm);
+              oy = MERGE_OTHERS(&bo[k], &fo[k], wo_o[k], wi2, y2_dvcm, y2_dvm, &rec.offset[k], rec.all_dvcm[1 + k],
+                                rec.all_dvm[1 + k], &mo);
             }
+#endif
           }
         }
-        lost += !shifted;
+        lost += !formed;
       }
-      sum_base[k] += w * cb;
+      float2 w = gbdpt_pair_weights(ox, oy, ratio, formed);
+      sum_base[k] += w.x * cb;
+      if (formed) sum_off[k] += w.y * co;
     }
   }
   if (orphans) atomic_add(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT], orphans);

@@ -15,17 +15,14 @@
 // parent on a delta surface (the manifold walk the reference takes there is not done) refuses the
 // shift.
 #pragma once
+#include "bidir/subpath_mis.h"
 #include "bsdf/transport.h"
 #include "core/ray_queue.h"
 #include "light/emission.h"
 #include "path/scene.h"
 #include "path/sides.h"
 #include "shared/bidir_types.h"
-
-#define GPM_PARENT_NONE 0      // a delta vertex: no reconnection
-#define GPM_PARENT_SURFACE 1   // a rough vertex of the light subpath, stored just before the photon
-#define GPM_PARENT_LIGHT 2     // the point the light subpath left its (area, point or spot) light from
-#define GPM_PARENT_INFINITE 3  // a light at infinity (directional, constant, environment map)
+#include "shared/gbidir_types.h"
 
 // Gather points whose shading normals are further apart than this (cosine) shift no photons:
 // their tangent frames would not carry the photon's offset over (the reference's |n - n'|^2 < 0.01).
@@ -40,6 +37,7 @@ typedef struct PhotonParent {
   Frame frame;
   float3 wo;  // infinite: the direction toward the light
   float far;  // infinite: a distance that takes any point of the scene out of it
+  float dvcm, dvc, dvm;  // surface: the light subpath's MIS sums as it reached the parent
 } PhotonParent;
 
 // The parent of store entry `entry` (vertex j of light subpath `slot`: entry = j * stride + slot),
@@ -78,6 +76,9 @@ inline PhotonParent photon_parent(const SceneData* s, __global const GdrBidirVer
   pa.b = surface_bsdf(s, &sq);
   pa.frame = frame_from_normal(sq.ns);
   pa.wo = vload3(0, q.wo);
+  pa.dvcm = q.dvcm;
+  pa.dvc = q.dvc;
+  pa.dvm = q.dvm;
   return pa;
 }
 
@@ -162,4 +163,46 @@ inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 
   *phi2 = phi * scale * (g > 0.0f ? g2 / g : 0.0f);
   *ratio = pdf * g > 0.0f ? (pdf2 * g2) / (pdf * g) : 0.0f;
   return max3(*phi2) > 0.0f && *ratio > 0.0f && isfinite(*ratio) && all(isfinite(*phi2));
+}
+
+// The light subpath's MIS sums (bidir/subpath_mis.h) at the offset photon sy2, for G-VCM's weights:
+// those base photon y (at py, geometric normal ny) arrived with, its last segment re-aimed. From
+// a rough parent they are the parent's sums scattered toward sy2 and arrived there; from a light
+// point, y's sums with the emission's direction pdf, the light's cosine and the segment changed
+// (the position pdf is the same point's); from a light at infinity (same direction, no length),
+// with the arrival's cosine changed.
+inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, float3 py, float3 ny,
+                              const Surface* sy2, const SceneData* s, const GdrBidirOptions* o, float* dvcm,
+                              float* dvm) {
+  float3 w2 = -photon_toward_parent(pa, sy2->p);
+  float cos2 = fabs(dot(sy2->ng, w2));
+  *dvcm = *dvm = 0.0f;
+  if (pa->kind == GPM_PARENT_SURFACE) {
+    float3 wo_l = frame_to_local(&pa->frame, pa->wo), w2_l = frame_to_local(&pa->frame, w2);
+    float pdf = bsdf_pdf(&pa->b, wo_l, w2_l), pdf_rev = bsdf_pdf(&pa->b, w2_l, wo_l);
+    if (!(pdf > 0.0f)) return;
+    float c = pa->dvcm, v = pa->dvc, m = pa->dvm;
+    mis_sums_scatter(0, pdf, pdf_rev, fabs(dot(pa->ng, w2)), o, &c, &v, &m);
+    mis_sums_arrive(length(sy2->p - pa->p), cos2, 1, o->mis, &c, &v, &m);
+    *dvcm = c;
+    *dvm = m;
+    return;
+  }
+  float3 w = -photon_toward_parent(pa, py);
+  float cos1 = fabs(dot(ny, w));
+  if (!(cos2 > 0.0f)) return;
+  float arrive = cos1 / cos2, emit = 1.0f, length2 = 1.0f;
+  if (pa->kind == GPM_PARENT_LIGHT) {
+    float pdf = light_emission_pdf_dir(s, pa->light, pa->ng, w), pdf2 = light_emission_pdf_dir(s, pa->light, pa->ng, w2);
+    if (!(pdf2 > 0.0f)) return;
+    emit = pdf / pdf2;
+    float3 d = py - pa->p, d2 = sy2->p - pa->p;
+    length2 = dot(d2, d2) / dot(d, d);
+    // The light's cosine: an area light's at its point (1 for the others, whose dvm is 0 anyway).
+    float cl = fabs(dot(pa->ng, w)), cl2 = fabs(dot(pa->ng, w2));
+    if (cl > 0.0f && cl2 > 0.0f) *dvm = y->dvm * mis_power_of(emit * arrive * cl2 / cl, o->mis);
+  } else {
+    *dvm = y->dvm * mis_power_of(arrive, o->mis);
+  }
+  *dvcm = y->dvcm * mis_power_of(emit * arrive * length2, o->mis);
 }

@@ -13,18 +13,26 @@
 // A and B leave light tracing out, and the weights of x and of y are scaled by 1 - w_lt of their
 // own path, (1 + others) / (1 + others with light tracing) (gbdpt_shifted_share). For every path
 // the weights of its base events, its offset events and its light tracing then sum to 1.
+//
+// G-VCM (Sun et al. 2017) weighs the same way over VCM's strategies: the sums carry merging's
+// factors (the pass's, in GdrGptParams), and a merge's share of base and offset comes from the
+// same heuristic (gbidir/merge.h).
 #pragma once
 #include "bidir/connection.h"
 #include "bidir/subpath_mis.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 
-inline GdrBidirOptions gbdpt_options(void) {
+// The options the camera subpaths' sums and weights take: the balance heuristic, and merging's
+// factors where G-VCM merges.
+inline GdrBidirOptions gbdpt_options(const GdrGptParams* p) {
   GdrBidirOptions o;
-  o.technique = BIDIR_BDPT;
+  o.technique = p->vm_factor > 0.0f ? BIDIR_VCM : BIDIR_BDPT;
   o.mis = BIDIR_MIS_BALANCE;
   o.strategy_s = o.strategy_t = -1;
-  o.radius = o.vm_normalization = o.vm_factor = o.vc_factor = 0.0f;
+  o.radius = o.vm_normalization = 0.0f;
+  o.vm_factor = p->vm_factor;
+  o.vc_factor = p->vc_factor;
   o.multiplex = 0;
   o.pad0 = 0;
   return o;
@@ -62,22 +70,22 @@ inline float2 gbdpt_escaped_emission_others(const SceneData* s, float3 dir, cons
                   mis_escaped_emission_others(s, dir, m->all_dvcm, m->all_dvc, BIDIR_MIS_BALANCE));
 }
 inline float2 gbdpt_light_point_others(const SceneData* s, const Bsdf* b, float3 wo_l, float3 wi_l, float3 ng,
-                                       int light, const LightSample* ls, const GbdptSums* m) {
-  GdrBidirOptions o = gbdpt_options();
-  return (float2)(mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->dvcm, m->dvc, &o),
-                  mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->all_dvcm, m->all_dvc, &o));
+                                       int light, const LightSample* ls, const GbdptSums* m,
+                                       const GdrBidirOptions* o) {
+  return (float2)(mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->dvcm, m->dvc, o),
+                  mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->all_dvcm, m->all_dvc, o));
 }
 
 // The "others" of connection c with light tracing's share, from the camera vertex's sums with it.
-inline float gbdpt_connection_all_others(const BidirConnection* c, float all_dvcm, float all_dvc) {
-  GdrBidirOptions o = gbdpt_options();
-  return c->w_light + mis_side(c->camera_pdf_area, all_dvcm, all_dvc, c->camera_pdf_rev, &o);
+inline float gbdpt_connection_all_others(const BidirConnection* c, float all_dvcm, float all_dvc,
+                                         const GdrBidirOptions* o) {
+  return c->w_light + mis_side(c->camera_pdf_area, all_dvcm, all_dvc, c->camera_pdf_rev, o);
 }
 
 // The sums of a camera subpath leaving the camera along a direction at cos_theta to its axis.
 inline GbdptSums gbdpt_sums_start(const GdrCamera* cam, float cos_theta) {
   GbdptSums m;
-  m.dvcm = m.dvc = m.all_dvc = 0.0f;
+  m.dvcm = m.dvc = m.dvm = m.all_dvc = m.all_dvm = 0.0f;
   m.all_dvcm = mis_camera_dvcm(cam, cos_theta, BIDIR_MIS_BALANCE);
   return m;
 }
@@ -85,13 +93,11 @@ inline GbdptSums gbdpt_sums_start(const GdrCamera* cam, float cos_theta) {
 // The camera subpath's sums reach its next vertex (dist away, arriving at cos_in) and scatter
 // there (pdf of the direction taken, delta lobe or not, pdf_rev back, leaving at cos_out).
 inline void gbdpt_sums_arrive(float dist, float cos_in, GbdptSums* m) {
-  float dvm = 0.0f;
-  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->dvcm, &m->dvc, &dvm);
-  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->all_dvcm, &m->all_dvc, &dvm);
+  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->dvcm, &m->dvc, &m->dvm);
+  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->all_dvcm, &m->all_dvc, &m->all_dvm);
 }
-inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, GbdptSums* m) {
-  GdrBidirOptions o = gbdpt_options();
-  float dvm = 0.0f;
-  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, &m->dvcm, &m->dvc, &dvm);
-  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &o, &m->all_dvcm, &m->all_dvc, &dvm);
+inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, const GdrBidirOptions* o,
+                               GbdptSums* m) {
+  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, o, &m->dvcm, &m->dvc, &m->dvm);
+  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, o, &m->all_dvcm, &m->all_dvc, &m->all_dvm);
 }

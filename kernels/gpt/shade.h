@@ -2,7 +2,8 @@
 // pairwise MIS weights, then the base's BSDF sample (offsets that share its vertex follow).
 // Built for G-BDPT (GDR_GBDPT), the same step weighs by G-BDPT's MIS (gbidir/weights.h), carries
 // the paths' bidirectional sums and records each rough vertex for the connections to the light
-// subpath (gbidir/connect.h). Built for G-PM (GDR_GPM), it is a photon mapper's camera subpath:
+// subpath (gbidir/connect.h), and for G-VCM (GDR_GVCM too) for the merges (gbidir/merge.h).
+// Built for G-PM (GDR_GPM), it is a photon mapper's camera subpath:
 // no next-event estimation, emission only through delta vertices (under the pair weight alone),
 // and the group ends at the base's first rough vertex, recorded for the merges (gbidir/merge.h).
 #pragma once
@@ -147,6 +148,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     }
   }
 #if defined(GDR_GBDPT)
+  GdrBidirOptions mo = gbdpt_options(&params);  // the options the sums and weights take
   // The bidirectional sums arrive at the paths' vertices.
   gbdpt_sums_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), &base.mis);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
@@ -212,7 +214,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     float3 f_le = bsdf_eval(&b, wo_l, wi_l) * ls.radiance / ls.pdf;  // per unit throughput
     float3 c_base = beta * f_le;
 #if defined(GDR_GBDPT)
-    float2 others_x = gbdpt_light_point_others(&s, &b, wo_l, wi_l, su.ng, light, &ls, &base.mis);
+    float2 others_x = gbdpt_light_point_others(&s, &b, wo_l, wi_l, su.ng, light, &ls, &base.mis, &mo);
 #else
     float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
 #endif
@@ -251,7 +253,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       }
       float r = formed ? o[k].ratio : 0.0f;
 #if defined(GDR_GBDPT)
-      float2 others_y = formed ? gbdpt_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, &o[k].mis) : (float2)(0.0f);
+      float2 others_y = formed ? gbdpt_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, &o[k].mis, &mo) : (float2)(0.0f);
       float2 w = gbdpt_pair_weights(others_x, others_y, r, formed);
       float w_base = w.x, w_off = w.y;
 #else
@@ -292,7 +294,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
 #endif
 
 #if defined(GDR_GBDPT)
-  if (!bsdf_is_delta(&b) && gbdpt_connects_at(st->depth, params.path.max_depth)) {
+  if (!bsdf_is_delta(&b) && gbdpt_records_at(st->depth, params.path.max_depth)) {
     records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, is_diffuse(&b, params.shift_threshold), o, so,
                                      wo_off, params.shift_threshold);
     connectable[atomic_inc(&counters[GPT_COUNTER_CONNECTABLE])] = g;
@@ -332,13 +334,13 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       offset_keep(&o[k], &pre);
 #if defined(GDR_GBDPT)
       float3 wr = o[k].mode == GPT_MODE_JOINED_RECENT ? frame_to_local(&frame, wo_off[k]) : wo_l;
-      gbdpt_sums_scatter(o[k].last_delta, o[k].last_pdf, bsdf_pdf(&b, bs.wi, wr), fabs(dot(su.ng, wi)), &o[k].mis);
+      gbdpt_sums_scatter(o[k].last_delta, o[k].last_pdf, bsdf_pdf(&b, bs.wi, wr), fabs(dot(su.ng, wi)), &mo, &o[k].mis);
 #endif
       o[k].mode = GPT_MODE_JOINED;
     }
   }
 #if defined(GDR_GBDPT)
-  gbdpt_sums_scatter(bs.delta, bs.pdf, bsdf_pdf(&b, bs.wi, wo_l), fabs(dot(su.ng, wi)), &base.mis);
+  gbdpt_sums_scatter(bs.delta, bs.pdf, bsdf_pdf(&b, bs.wi, wo_l), fabs(dot(su.ng, wi)), &mo, &base.mis);
 #endif
   for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
 

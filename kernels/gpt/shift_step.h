@@ -82,8 +82,9 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     }
     offset_keep(&o, &pre);
 #if defined(GDR_GBDPT)
+    GdrBidirOptions mo = gbdpt_options(&params);
     gbdpt_sums_scatter(o.last_delta, o.last_pdf, bsdf_pdf(&y.b, frame_to_local(&y.frame, wiy_w), y.wo),
-                       fabs(dot(y.su.ng, wiy_w)), &o.mis);
+                       fabs(dot(y.su.ng, wiy_w)), &mo, &o.mis);
 #endif
     o.glossy_next_only = glossy_next_only;
     vstore3(y.su.p, 0, o.prev_pos);

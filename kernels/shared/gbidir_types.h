@@ -12,15 +12,21 @@
 #define GBDPT_OFFSET_SHARED 2  // at the base's vertex (joined): shares the base's connection segments
 #define GBDPT_OFFSET_GLOSSY 3  // at a vertex of its own, but the shift there is no reconnection: fails
 
+// What a photon's parent is (the vertex its light subpath reached it from; gbidir/photon_shift.h).
+#define GPM_PARENT_NONE 0      // a delta vertex: no reconnection
+#define GPM_PARENT_SURFACE 1   // a rough vertex of the light subpath, stored just before the photon
+#define GPM_PARENT_LIGHT 2     // the point the light subpath left its (area, point or spot) light from
+#define GPM_PARENT_INFINITE 3  // a light at infinity (directional, constant, environment map)
+
 // A rough camera vertex of a group, written by the shade step for the connections to the light
 // subpath's stored vertices: the base's vertex and each offset's, with its throughput
 // (f(y) |J| / p(x)), its pdf ratio to the base (p(y) |J| / p(x)) and its own MIS sums (the
-// vertices' without light tracing's share, all_dvcm and all_dvc with it: index 0 the base's, 1 + k
-// offset k's).
+// vertices' without light tracing's share, all_dvcm, all_dvc and all_dvm with it: index 0 the
+// base's, 1 + k offset k's).
 typedef struct GbdptCameraVertex {
   GdrBidirVertex base;
   GdrBidirVertex offset[GPT_OFFSETS];
-  float all_dvcm[1 + GPT_OFFSETS], all_dvc[1 + GPT_OFFSETS];
+  float all_dvcm[1 + GPT_OFFSETS], all_dvc[1 + GPT_OFFSETS], all_dvm[1 + GPT_OFFSETS];
   float ratio[GPT_OFFSETS];
   int state[GPT_OFFSETS];  // GBDPT_OFFSET_*
 } GbdptCameraVertex;

@@ -28,7 +28,8 @@ typedef struct GdrGptParams {
   GdrPtParams path;       // pixel_count counts groups; strategy is always MIS
   int shift;              // GPT_SHIFT_*
   float shift_threshold;  // roughness at or below which a vertex is glossy (not reconnectable)
-  int pad0, pad1;
+  // G-VCM: merging's factors in the bidirectional sums (GdrBidirOptions' of the pass; 0 elsewhere).
+  float vm_factor, vc_factor;
 } GdrGptParams;
 
 // Accumulators per group (float4 each): contributions of the base to the pair with neighbour k,

@@ -9,12 +9,12 @@
 #define GPT_DIR_PY 2
 #define GPT_DIR_NY 3
 
-// G-BDPT's running MIS sums of a camera subpath (bidir/subpath_mis.h), twice: without light
-// tracing's share (the strategies whose gradients are shifted, weighed among themselves), and with
-// it (every strategy; gbidir/weights.h).
+// G-BDPT's and G-VCM's running MIS sums of a camera subpath (bidir/subpath_mis.h), twice: without
+// light tracing's share (the strategies whose gradients are shifted, weighed among themselves),
+// and with it (every strategy; gbidir/weights.h). dvm stays 0 where nothing merges.
 typedef struct GbdptSums {
-  float dvcm, dvc;
-  float all_dvcm, all_dvc;
+  float dvcm, dvc, dvm;
+  float all_dvcm, all_dvc, all_dvm;
 } GbdptSums;
 
 // What an offset path is doing.

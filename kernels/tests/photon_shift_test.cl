@@ -23,3 +23,27 @@ __kernel void photon_geometry_eval(uint count, __global const float4* in, __glob
   if (i >= count) return;
   out[i] = photon_geometry(in[3 * i].xyz, in[3 * i + 1].xyz, normalize(in[3 * i + 2].xyz));
 }
+
+// G-VCM's light-side sums of a photon shifted onto itself (photon_shift_sums with the offset photon
+// at the base photon's own point): for each store entry e of a traced batch (vertex j of subpath
+// slot at j * stride + slot, below `stored` of its subpath), out[e] = (the photon's dvcm, the
+// recomputed dvcm, its dvm, the recomputed dvm), and kind[e] its parent's kind (GPM_PARENT_*, -1
+// for no stored vertex).
+__kernel void photon_shift_sums_unshifted(GdrPtParams params, GdrBidirOptions opts, uint entries, uint stride,
+                                          __global const GdrBidirPathState* light_paths,
+                                          __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                          __global float4* out, __global int* kind, SCENE_DATA_ARGS) {
+  uint e = get_global_id(0);
+  if (e >= entries) return;
+  uint j = e / stride, slot = e % stride;
+  kind[e] = -1;
+  if (slot >= params.pixel_count || (int)j >= light_paths[slot].stored) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  GdrBidirVertex y = store[e];
+  PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
+  kind[e] = pa.kind;
+  Surface sy = surface_at(&s, y.prim, y.u, y.v);
+  float dvcm = 0.0f, dvm = 0.0f;
+  if (pa.kind != GPM_PARENT_NONE) photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy, &s, &opts, &dvcm, &dvm);
+  out[e] = (float4)(y.dvcm, dvcm, y.dvm, dvm);
+}

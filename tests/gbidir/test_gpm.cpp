@@ -1,5 +1,6 @@
 // Gradient-domain photon mapping (`gpm`) is consistent. On the diffuse Cornell box (32 x 32,
-// max_depth 6), against a long path-traced reference (4096 spp, seed 500): the error of its
+// max_depth 6), against a long path-traced reference (4096 spp, seed 500;
+// support/consistent_gradients.h): the error of its
 // gradients (dx, dy plus the differences of the directly seen emission, kept out of them) against
 // the reference's neighbour differences, and the error of its primal and of its reconstruction,
 // fall as the passes grow (4, 16, 64: the radius shrinks and the estimates add up); its gradients
@@ -13,7 +14,6 @@
 // Also: failed shifts are counted by reason, and the parameters are checked.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -21,9 +21,8 @@
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_photon_mapping.h"
 #include "scene/load_scene.h"
-#include "support/agreement.h"
+#include "support/consistent_gradients.h"
 #include "support/envmap_scene.h"
-#include "support/gradient_unbiased.h"
 #include "support/render.h"
 #include "support/test_scenes.h"
 #include "util/error.h"
@@ -31,133 +30,35 @@
 namespace gdr {
 namespace {
 
-constexpr int kMaxDepth = 6;
-
-struct Box {
-  explicit Box(const std::string& file)
-      : scene(test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32)) {}
-  explicit Box(Scene s) : scene(std::move(s)) {}
-  Scene scene;
-  test::SceneOnDevice on_device{scene};
-  std::vector<float> reference_, ref_dx_, ref_dy_;
-  std::vector<char> pairs_x_, pairs_y_;  // the neighbour pairs neither of which sees the light
-
-  // Rendered on first use. The light seen directly (the reference at max_depth 1) marks the pixels
-  // whose differences the gradient errors leave out: at the light's edge a pixel's coverage of it
-  // is a coin flip per sample, as noisy in every integrator's directly seen emission, and would
-  // outweigh everything else.
-  void render_reference() {
-    if (!reference_.empty()) return;
-    RenderSettings s;
-    s.spp = 4096;
-    s.seed = 500;
-    s.max_depth = kMaxDepth;
-    PathTracer pt(on_device.inputs(), PtSettings{});
-    reference_ = pt.render(s).image.rgb_layer("");
-    const int w = scene.camera.width, h = scene.camera.height;
-    test::differences(w, h, reference_, ref_dx_, ref_dy_);
-    s.max_depth = 1;
-    const std::vector<float> direct = pt.render(s).image.rgb_layer("");
-    auto dark = [&](int x, int y) {
-      size_t i = 3 * (size_t(y) * w + x);
-      return direct[i] == 0.0f && direct[i + 1] == 0.0f && direct[i + 2] == 0.0f;
-    };
-    pairs_x_.assign(size_t(w) * h, 0);
-    pairs_y_.assign(size_t(w) * h, 0);
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        pairs_x_[size_t(y) * w + x] = x + 1 < w && dark(x, y) && dark(x + 1, y);
-        pairs_y_[size_t(y) * w + x] = y + 1 < h && dark(x, y) && dark(x, y + 1);
-      }
-    }
-  }
-};
+using test::ConsistencyScene;
+using test::consistency_errors;
+using test::consistency_settings;
+using test::mean;
 
 // Two diffuse spheres on a diffuse plane under a uniform sky (an environment map of one value):
 // every photon's first segment comes from a light at infinity. 32 x 24 pixels.
-Box& sky_box() {
-  static std::unique_ptr<Box> b = std::make_unique<Box>(test::scene_with_environment(
+ConsistencyScene& sky_box() {
+  static std::unique_ptr<ConsistencyScene> b = std::make_unique<ConsistencyScene>(test::scene_with_environment(
       8, 4, std::vector<float>(32, 1.0f),
       test::spheres_on_plane_xml(R"(<emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>)",
                                  R"(<bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.6, 0.3"/></bsdf>)")));
   return *b;
 }
 
-// The diffuse Cornell box (area light) and the environment scene (a constant environment and a
-// directional sun: photons from lights at infinity).
-Box& box(const std::string& file = "cornell-box.xml") {
-  static std::map<std::string, std::unique_ptr<Box>> boxes;
-  std::unique_ptr<Box>& b = boxes[file];
-  if (!b) b = std::make_unique<Box>(file);
+// The diffuse Cornell box (area light).
+ConsistencyScene& box() {
+  static std::unique_ptr<ConsistencyScene> b = std::make_unique<ConsistencyScene>("cornell-box.xml");
   return *b;
 }
 
-RenderSettings settings(int spp, uint32_t seed) {
-  RenderSettings s;
-  s.spp = spp;
-  s.seed = seed;
-  s.max_depth = kMaxDepth;
-  return s;
-}
-
-double relmse(const std::vector<float>& a, const std::vector<float>& ref, const std::vector<float>& scale) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    double d = double(a[i]) - ref[i];
-    sum += d * d / (double(scale[i]) * scale[i] + 1e-2);
-  }
-  return sum / double(a.size());
-}
-
-// The relative error of differences dx, dy against the reference's, over the pairs counted.
-double gradient_relmse(const Box& b, const std::vector<float>& dx, const std::vector<float>& dy) {
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < dx.size(); ++i) {
-    const double scale = double(b.reference_[i]) * b.reference_[i] + 1e-2;
-    if (b.pairs_x_[i / 3]) sum += std::pow(double(dx[i]) - b.ref_dx_[i], 2) / scale, ++n;
-    if (b.pairs_y_[i / 3]) sum += std::pow(double(dy[i]) - b.ref_dy_[i], 2) / scale, ++n;
-  }
-  return sum / double(n);
-}
-
-double mean(const std::vector<float>& v) {
-  double s = 0;
-  for (float x : v) s += x;
-  return s / double(v.size());
-}
-
-struct Errors {
-  double gradients = 0, primal = 0, reconstruction = 0;
-};
-
-// One run's errors against the reference: the gradients' (relative to the reference pixel),
-// the primal's and the reconstruction's.
-Errors errors(GradientPathTracer& gpm, int spp, uint32_t seed, Box& b = box()) {
-  b.render_reference();
-  const int w = b.scene.camera.width, h = b.scene.camera.height;
-  RenderSettings s = settings(spp, seed);
-  GradientImages g = gpm.render_gradients(s);
-  std::vector<float> ddx, ddy;
-  test::differences(w, h, g.direct, ddx, ddy);
-  for (size_t i = 0; i < g.dx.size(); ++i) {
-    g.dx[i] += ddx[i];
-    g.dy[i] += ddy[i];
-  }
-  Errors e;
-  e.gradients = gradient_relmse(b, g.dx, g.dy);
-  e.primal = relmse(g.primal, b.reference_, b.reference_);
-  std::vector<float> recon = gpm.render(s).image.rgb_layer("");
-  e.reconstruction = relmse(recon, b.reference_, b.reference_);
-  return e;
-}
+RenderSettings settings(int spp, uint32_t seed) { return consistency_settings(spp, seed); }
 
 TEST(Gpm, ErrorFallsAsPassesGrow) {
   GradientPhotonMapping gpm(box().on_device.inputs(), gpm_settings({}));
-  Errors previous{INFINITY, INFINITY, INFINITY};
+  test::ConsistencyErrors previous{INFINITY, INFINITY, INFINITY};
   for (int spp : {4, 16, 64}) {
-    Errors a = errors(gpm, spp, 1), b = errors(gpm, spp, 2);
-    Errors e{0.5 * (a.gradients + b.gradients), 0.5 * (a.primal + b.primal),
+    test::ConsistencyErrors a = consistency_errors(gpm, spp, 1, box()), b = consistency_errors(gpm, spp, 2, box());
+    test::ConsistencyErrors e{0.5 * (a.gradients + b.gradients), 0.5 * (a.primal + b.primal),
              0.5 * (a.reconstruction + b.reconstruction)};
     // Measured: gradients 0.0234, 0.0087, 0.0031; primal 0.249, 0.022, 0.0052; reconstruction 0.240,
     // 0.017, 0.0036 (pm's image: 0.27, 0.029, 0.0079, tests/bidir/test_merging.cpp).
@@ -170,18 +71,14 @@ TEST(Gpm, ErrorFallsAsPassesGrow) {
 
 // The photon shift is what makes the gradients: at equal passes they are closer to the reference's
 // differences than the differences of pm's image are.
-void expect_gradients_beat_pm(Box& b, const char* what, double factor) {
-  b.render_reference();
-  const int w = b.scene.camera.width, h = b.scene.camera.height;
+void expect_gradients_beat_pm(ConsistencyScene& b, const char* what, double factor) {
   GradientPhotonMapping gpm(b.on_device.inputs(), gpm_settings({}));
   Bidirectional pm(b.on_device.inputs(), pm_settings({}));
   for (int spp : {4, 16}) {
     double e_pm = 0, e_gpm = 0;
     for (uint32_t seed = 1; seed <= 2; ++seed) {
-      std::vector<float> dx, dy;
-      test::differences(w, h, pm.render(settings(spp, seed)).image.rgb_layer(""), dx, dy);
-      e_pm += gradient_relmse(b, dx, dy);
-      e_gpm += errors(gpm, spp, seed, b).gradients;
+      e_pm += b.image_gradient_relmse(pm.render(settings(spp, seed)).image.rgb_layer(""));
+      e_gpm += consistency_errors(gpm, spp, seed, b).gradients;
     }
     EXPECT_LT(e_gpm, factor * e_pm) << what << " at " << spp << " passes";
   }
@@ -198,22 +95,11 @@ TEST(Gpm, SkyPhotonsGradientsBeatPmDifferences) { expect_gradients_beat_pm(sky_b
 // that a shift dropping the photon's change of distance to its parent exceeds (measured: 0.0010;
 // without that term 0.0030).
 TEST(Gpm, MeanGradientsConverge) {
-  Box& b = box();
-  b.render_reference();
-  GradientPhotonMapping gpm(b.on_device.inputs(), gpm_settings({}));
-  const int runs = 8;
-  std::vector<float> dx(b.reference_.size(), 0.0f), dy = dx;
-  for (uint32_t seed = 1; seed <= runs; ++seed) {
-    GradientImages g = gpm.render_gradients(settings(64, seed));
-    for (size_t i = 0; i < dx.size(); ++i) {
-      dx[i] += g.dx[i] / runs;
-      dy[i] += g.dy[i] / runs;
-    }
-  }
-  EXPECT_LT(gradient_relmse(b, dx, dy), 0.0018);
+  GradientPhotonMapping gpm(box().on_device.inputs(), gpm_settings({}));
+  EXPECT_LT(test::mean_gradient_relmse(gpm, 64, 8, box()), 0.0018);
 }
 
-void expect_primal_agrees_with_pm(Box& b, const char* what) {
+void expect_primal_agrees_with_pm(ConsistencyScene& b, const char* what) {
   GradientPhotonMapping gpm(b.on_device.inputs(), gpm_settings({}));
   Bidirectional pm(b.on_device.inputs(), pm_settings({}));
   double sum_gpm = 0, sum_pm = 0;

@@ -1,7 +1,7 @@
-// The gradient-domain bidirectional integrators (gbdpt, gpm) stay finite on every project scene
-// (glass, mirrors, rough metals, an environment map with a sun) and beside a delta light with a
-// degenerate emitter (a zero-area triangle and a point light: gbdpt's offsets' connections end on
-// both, gpm's photons are shifted from both): every pixel of every layer finite, no sample rejected
+// The gradient-domain bidirectional integrators (gbdpt, gpm, gvcm) stay finite on every project
+// scene (glass, mirrors, rough metals, an environment map with a sun) and beside a delta light with
+// a degenerate emitter (a zero-area triangle and a point light: gbdpt's and gvcm's offsets'
+// connections end on both, gpm's and gvcm's photons are shifted from both): every pixel of every layer finite, no sample rejected
 // as NaN or Inf, something rendered, connections or merges made. Renders of 24 pixels wide, 4
 // samples a pixel, seed 404, on a context of their own with stats.
 #include <gtest/gtest.h>
@@ -62,6 +62,19 @@ TEST(GpmStability, ProjectScenesAreFinite) {
 
 TEST(GpmStability, ZeroAreaLightAndPointLight) {
   expect_stable("gpm", "gpm/merges", point_light_beside_zero_area_emitter(), -1, "point light and zero-area emitter");
+}
+
+TEST(GvcmStability, ProjectScenesAreFinite) {
+  int scenes = for_each_project_scene(24, [](const std::string& path, const Scene& scene) {
+    expect_stable("gvcm", "gpm/merges", scene, scene.max_depth > 0 ? scene.max_depth : 16, path);
+  });
+  EXPECT_GE(scenes, 5);
+}
+
+TEST(GvcmStability, ZeroAreaLightAndPointLight) {
+  expect_stable("gvcm", "gbdpt/connections", point_light_beside_zero_area_emitter(), -1,
+                "point light and zero-area emitter");
+  expect_stable("gvcm", "gpm/merges", point_light_beside_zero_area_emitter(), -1, "point light and zero-area emitter");
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include "integrators/gbidir/gradient_bidirectional.h"
 
-#include "integrators/bidir/bidirectional.h"
 
 namespace gdr {
 namespace {
@@ -15,31 +14,52 @@ GdrBidirOptions light_options() {
 }  // namespace
 
 const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux"};
+const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "radius", "radius_alpha"};
 
 GptSettings gbdpt_settings(const IntegratorParams& params) {
   return gpt_settings_without_manifold(
       params, "gbdpt shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
 }
 
+GptSettings gvcm_settings(const IntegratorParams& params) {
+  return gpt_settings_without_manifold(
+      params, "gvcm shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
+}
+
+BidirSettings gvcm_photon_settings(const IntegratorParams& params) {
+  BidirSettings s = vcm_settings(params);
+  s.options.mis = BIDIR_MIS_BALANCE;
+  return s;
+}
+
 GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSettings& gpt,
-                                             const IntegratorParams& params)
-    : GradientPathTracer(in, gpt, params, GroupKind::kConnecting),
-      subpaths_(in, BIDIR_BDPT, groups_.capacity()),
+                                             const IntegratorParams& params, std::optional<BidirSettings> merging)
+    : GradientPathTracer(in, gpt, params, merging ? GroupKind::kConnectingMerging : GroupKind::kConnecting),
+      merging_(merging),
+      subpaths_(in, merging ? BIDIR_VCM : BIDIR_BDPT, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()),
       light_tracing_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height),
       add_light_tracing_(groups_.kernels().make(groups_.program(), "gbdpt_add_light_tracing")) {
   light_tracing_.fill(Vec4{});
+  if (merging_) shifts_.emplace(in, groups_);
 }
 
 void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
                                         uint32_t count) {
   GdrGptParams p = groups_.params(settings, sample, first, count);
   p.path.max_depth = bdpt_segments(settings.max_depth);
+  const GdrBidirOptions o = merging_ ? merging_pass_options(*merging_, in_.scene, sample, count) : light_options();
+  // The camera subpaths' sums take the light subpaths' merging factors (kernels/gbidir/weights.h).
+  p.vm_factor = o.vm_factor;
+  p.vc_factor = o.vc_factor;
   const bool light = light_subpaths_allowed(settings.max_depth) && p.path.light_count > 0;
-  if (light) subpaths_.trace_light(p.path, light_options(), BidirSink{groups_.acc(), splats_, &light_tracing_});
+  if (light) subpaths_.trace_light(p.path, o, BidirSink{groups_.acc(), splats_, &light_tracing_});
   const GroupLightSubpaths subpaths{subpaths_.light_paths(), subpaths_.store(), cl_uint(subpaths_.capacity()),
                                     subpaths_.stored_bound()};
-  groups_.trace(p, PrimarySamples(), aux(), light ? &subpaths : nullptr);
+  const PhotonGrid grid = subpaths_.grid();
+  GradientGroups::RecordsStep merge;
+  if (light && shifts_) merge = [&](cl_uint recorded) { shifts_->merge(p, o, recorded, groups_, grid); };
+  groups_.trace(p, PrimarySamples(), aux(), light ? &subpaths : nullptr, merge);
   groups_.report(in_.context.stats());
   subpaths_.report(in_.context.stats());
 }
@@ -50,7 +70,7 @@ void GradientBidirectional::end_pass() {
 }
 
 RenderResult GradientBidirectional::render(const RenderSettings& settings) {
-  warn_beyond_store("gbdpt", settings.max_depth);
+  warn_beyond_store(merging_ ? "gvcm" : "gbdpt", settings.max_depth);
   return GradientPathTracer::render(settings);
 }
 

@@ -14,26 +14,45 @@
 // the gradients (`direct`, beside the emission the camera sees directly), and the shifted
 // strategies' weights leave each path light tracing's share. Outputs and reconstruction are G-PT's.
 //
+// Gradient-domain vertex connection and merging (`gvcm`, Sun et al. 2017) is the same integrator
+// with merging: every rough camera vertex of base and offsets also merges with the pass's photons
+// (all groups' light subpaths, in their hash grid) by G-PM's merge stage (PhotonShifts): an offset
+// at a vertex of its own merges the photons shifted there (kernels/gbidir/photon_shift.h), one at
+// the base's vertex the same photons. The light subpaths are vcm's, the radius schedule vcm's, and
+// every strategy's weight (connections, merges, emission, light points) is the balance heuristic
+// over all of VCM's strategies of base and offset, the sums carrying merging's factors; light
+// tracing, under vcm's weight over every strategy, stays unshifted.
+//
 // Left out: the manifold shift is refused (its offsets would need their bidirectional sums through
 // the walk's vertices); light tracing's paths get no gradients (the paper shifts them from their
-// splat pixel).
+// splat pixel); gvcm's photons whose parent is a delta vertex are not shifted (as gpm's: counted
+// in shift_failures/photon_parent, the base keeps the pair's weight).
 //
 // Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux
-// as gpt's; recon, recon_solver, alpha: the reconstruction (render/gradient_images.h). Paths are
-// bdpt's: at most kBdptMaxSegments segments.
+// as gpt's; gvcm: radius and radius_alpha as vcm's; recon, recon_solver, alpha: the reconstruction
+// (render/gradient_images.h). Paths are bdpt's: at most kBdptMaxSegments segments.
 #pragma once
+#include <optional>
+
+#include "integrators/bidir/bidirectional.h"
 #include "integrators/bidir/subpaths.h"
+#include "integrators/gbidir/photon_shifts.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "render/splat_film.h"
 
 namespace gdr {
 
-extern const std::vector<std::string> kGbdptParams;
+extern const std::vector<std::string> kGbdptParams, kGvcmParams;
 GptSettings gbdpt_settings(const IntegratorParams& params);
+GptSettings gvcm_settings(const IntegratorParams& params);
+// gvcm's light subpaths and radius schedule: vcm's, under the balance heuristic.
+BidirSettings gvcm_photon_settings(const IntegratorParams& params);
 
 class GradientBidirectional : public GradientPathTracer {
  public:
-  GradientBidirectional(const RenderInputs& inputs, const GptSettings& gpt, const IntegratorParams& params = {});
+  // `merging`: gvcm's photons (else gbdpt).
+  GradientBidirectional(const RenderInputs& inputs, const GptSettings& gpt, const IntegratorParams& params = {},
+                        std::optional<BidirSettings> merging = std::nullopt);
 
   RenderResult render(const RenderSettings& settings) override;
 
@@ -41,10 +60,12 @@ class GradientBidirectional : public GradientPathTracer {
   void trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) override;
   void end_pass() override;
 
+  std::optional<BidirSettings> merging_;
   BidirSubpaths subpaths_;  // the light subpaths, one a group
   SplatFilm splats_;        // their connections to the camera (t = 1)
   Buffer<Vec4> light_tracing_;  // and the pass's sum of them, a pixel
   Kernel add_light_tracing_;
+  std::optional<PhotonShifts> shifts_;  // gvcm's merges
 };
 
 }  // namespace gdr

@@ -18,7 +18,8 @@ constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
 
 Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, GroupKind kind) {
   Defines d = gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
-  if (kind == GroupKind::kConnecting) d["GDR_GBDPT"] = "1";
+  if (kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging) d["GDR_GBDPT"] = "1";
+  if (kind == GroupKind::kConnectingMerging) d["GDR_GVCM"] = "1";
   if (kind == GroupKind::kMerging) d["GDR_GPM"] = "1";
   return d;
 }
@@ -47,6 +48,7 @@ const char* GradientGroups::program() const {
   switch (kind_) {
     case GroupKind::kConnecting: return kConnectingProgram;
     case GroupKind::kMerging: return kMergingProgram;
+    case GroupKind::kConnectingMerging: return kConnectingMergingProgram;
     default: return kProgram;
   }
 }
@@ -82,7 +84,7 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
     manifold_.emplace(in, kernels_, program(), capacity_ * GPT_OFFSETS, gpt.manifold);
     join_.emplace(kernels_.make(program(), "gpt_manifold_join"));
   }
-  if (kind == GroupKind::kConnecting) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
+  if (kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
   if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
 }
 

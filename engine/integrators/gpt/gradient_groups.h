@@ -49,14 +49,16 @@ struct GroupLightSubpaths {
 };
 
 // What a batch of groups is: G-PT's paths, G-BDPT's camera subpaths (which connect to light
-// subpaths) or G-PM's (which end at their visible points, where the caller merges).
-enum class GroupKind { kPaths, kConnecting, kMerging };
+// subpaths), G-PM's (which end at their visible points, where the caller merges) or G-VCM's
+// (which connect, and the caller merges at each of their rough vertices).
+enum class GroupKind { kPaths, kConnecting, kMerging, kConnectingMerging };
 
 class GradientGroups {
  public:
   static constexpr const char* kProgram = "gpt/gpt.cl";
   static constexpr const char* kConnectingProgram = "gbidir/gbdpt.cl";
   static constexpr const char* kMergingProgram = "gbidir/gpm.cl";
+  static constexpr const char* kConnectingMergingProgram = "gbidir/gvcm.cl";
 
   // Up to `capacity` groups a batch; `indices` path indices (acc holds GPT_ACC_COUNT a path).
   GradientGroups(const RenderInputs& inputs, const GptSettings& gpt, size_t capacity, size_t indices,
@@ -78,7 +80,8 @@ class GradientGroups {
   const Buffer<cl_uint>& connectable() const { return connectable_; }
   DeviceCounters& counters() { return counters_; }
 
-  // Called after each shade step of merging groups with the number of groups it recorded.
+  // Called after each shade step of merging groups (and after the connections of connecting and
+  // merging ones) with the number of groups it recorded.
   using RecordsStep = std::function<void(cl_uint recorded)>;
 
   // The groups of paths [p.path.first_pixel, + p.path.pixel_count), their sums into acc.
