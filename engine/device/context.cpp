@@ -18,9 +18,15 @@ Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stat
                                    reinterpret_cast<cl_context_properties>(device.platform), 0};
   context_ = clCreateContext(props, 1, &device_.device, nullptr, nullptr, &err);
   cl_check(err, "clCreateContext");
-  queue_ = clCreateCommandQueue(context_, device_.device, CL_QUEUE_PROFILING_ENABLE, &err);
-  if (err != CL_SUCCESS) clReleaseContext(context_);
-  cl_check(err, "clCreateCommandQueue");
+  for (cl_command_queue& q : queues_) {
+    q = clCreateCommandQueue(context_, device_.device, CL_QUEUE_PROFILING_ENABLE, &err);
+    if (err == CL_SUCCESS) continue;
+    for (cl_command_queue made : queues_) {
+      if (made) clReleaseCommandQueue(made);
+    }
+    clReleaseContext(context_);
+    cl_check(err, "clCreateCommandQueue");
+  }
   if (stats_) {
     stats_->set("device/name", device_.name);
     stats_->set("device/platform", device_.platform_name);
@@ -35,12 +41,18 @@ Context::~Context() {
   }
   kept_.clear();
   programs_.clear();
-  if (queue_) clReleaseCommandQueue(queue_);
+  for (cl_command_queue q : queues_) {
+    if (q) clReleaseCommandQueue(q);
+  }
   if (context_) clReleaseContext(context_);
 }
 
 void Context::finish() const {
-  cl_int err = clFinish(queue_);
+  cl_int err = CL_SUCCESS;
+  for (cl_command_queue q : queues_) {
+    cl_int e = clFinish(q);
+    if (err == CL_SUCCESS) err = e;
+  }
   collect_timings();
   cl_check(err, "clFinish");
 }

@@ -1,4 +1,4 @@
-// One OpenCL device in use: its context and in-order profiling queue, program builds (with a
+// One OpenCL device in use: its context and in-order profiling queues, program builds (with a
 // persistent binary cache), kernel launches that record their device time, and typed buffers.
 #pragma once
 #include <CL/cl.h>
@@ -31,14 +31,21 @@ class Context {
   const DeviceInfo& device() const { return device_; }
   bool is_cpu() const { return device_.type == "cpu"; }
   cl_context handle() const { return context_; }
-  cl_command_queue queue() const { return queue_; }
+  // Commands (launches, reads, maps) go to the current queue: queue 0 unless a QueueScope selects
+  // another. Each queue is in order; commands of different queues may run at the same time, so
+  // that the host can wait on one batch of paths while the device works on another's.
+  static constexpr int kQueues = 2;
+  cl_command_queue queue() const { return queues_[current_]; }
+  int current_queue() const { return current_; }
+  void select_queue(int index) { current_ = index; }
   Stats* stats() const { return stats_; }
 
   // Builds kernels/<root> with `defines`; the same (root, defines) is built once per Context.
   // Throws DeviceError with the compiler log (file:line of the kernel source) on failure.
   std::shared_ptr<Program> program(const std::string& root, const Defines& defines = {});
 
-  // Waits for every queued command; with deferred timing also records the kernels' times.
+  // Waits for every queued command of every queue; with deferred timing also records the
+  // kernels' times.
   void finish() const;
 
   // Deferred timing: Kernel::run returns once the launch is queued instead of waiting for its
@@ -57,7 +64,8 @@ class Context {
   DeviceInfo device_;
   Stats* stats_;
   cl_context context_ = nullptr;
-  cl_command_queue queue_ = nullptr;
+  cl_command_queue queues_[kQueues] = {};
+  int current_ = 0;
   std::map<std::string, std::shared_ptr<Program>> programs_;
   std::map<std::string, std::shared_ptr<void>> kept_;
   friend class Kernel;
@@ -91,6 +99,19 @@ class DeferredTiming {
  private:
   Context& ctx_;
   bool was_;
+};
+
+// Selects queue `index` for the commands of this scope.
+class QueueScope {
+ public:
+  QueueScope(Context& ctx, int index) : ctx_(ctx), was_(ctx.current_queue()) { ctx.select_queue(index); }
+  ~QueueScope() { ctx_.select_queue(was_); }
+  QueueScope(const QueueScope&) = delete;
+  QueueScope& operator=(const QueueScope&) = delete;
+
+ private:
+  Context& ctx_;
+  int was_;
 };
 
 class Kernel;

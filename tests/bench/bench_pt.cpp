@@ -39,7 +39,7 @@ struct PtBench {
       : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
         device_scene(std::make_unique<DeviceScene>(ctx, scene)),
-        tracer(std::make_unique<PathTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, PtSettings{})),
+        tracer(std::make_unique<PathTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, one_batch())),
         pixels(uint32_t(scene.camera.width) * scene.camera.height) {
     RenderSettings settings;
     settings.seed = 1;
@@ -69,6 +69,13 @@ struct PtBench {
     std::vector<T> v = b.read();
     v.resize(count);
     return v;
+  }
+
+  // The stages run on the whole chunk: one batch.
+  static PtSettings one_batch() {
+    PtSettings s;
+    s.batches = 1;
+    return s;
   }
 
   static Scene load(const std::string& path) {

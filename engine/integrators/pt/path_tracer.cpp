@@ -1,7 +1,10 @@
 #include "integrators/pt/path_tracer.h"
 
+#include <algorithm>
+
 #include "render/radiance_render.h"
 #include "render/wavefront/chunks.h"
+#include "util/error.h"
 
 namespace gdr {
 namespace {
@@ -9,19 +12,31 @@ namespace {
 // Paths in flight per chunk: bounds the queues' memory (about 300 bytes a path) while keeping
 // Embree's batches and the kernels' launches large.
 constexpr size_t kMaxPathsInFlight = size_t(1) << 19;
+// Fewer paths than this a batch would leave launches and Embree's calls too small to pay.
+constexpr size_t kMinBatchPaths = size_t(1) << 14;
 constexpr const char* kProgram = "pt/pt.cl";
 
 }  // namespace
 
-const std::vector<std::string> kPtParams = {"strategy", "aux"};
+const std::vector<std::string> kPtParams = {"strategy", "aux", "batches"};
 
 PtSettings pt_settings(const IntegratorParams& params) {
   PtSettings s;
   std::string strategy = params.choice("strategy", "mis", {"mis", "bsdf", "light"});
   s.strategy = strategy == "bsdf" ? PT_STRATEGY_BSDF : strategy == "light" ? PT_STRATEGY_LIGHT : PT_STRATEGY_MIS;
   s.aux = params.flag("aux", false);
+  s.batches = params.choice("batches", "2", {"1", "2"}) == "1" ? 1 : 2;
   return s;
 }
+
+PathTracer::Batch::Batch(const RenderInputs& in, const KernelFactory& kernels, size_t capacity, int command_queue)
+    : command_queue(command_queue),
+      queues(in.context, capacity, true),
+      paths(in.context, capacity),
+      shadow_rays(in.context, capacity, kRayQueueFlags),
+      shadow_values(in.context, capacity),
+      counters(in.context, GDR_COUNTER_NAMES(PT_COUNTERS)),
+      materials(in.context, in.scene, kernels, kProgram, "pt_shade", capacity) {}
 
 PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
     : in_(in),
@@ -31,13 +46,11 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       route_(kernels_.make(kProgram, "pt_route")),
       shadow_(kernels_.make(kProgram, "path_shadow_add")),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
-      queues_(in.context, capacity_, true),
-      paths_(in.context, capacity_),
-      shadow_rays_(in.context, capacity_, kRayQueueFlags),
-      shadow_values_(in.context, capacity_),
-      counters_(in.context, GDR_COUNTER_NAMES(PT_COUNTERS)),
-      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
-      materials_(in.context, in.scene, kernels_, kProgram, "pt_shade", capacity_) {
+      film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
+  const int batches = capacity_ < kMinBatchPaths * size_t(pt_.batches) ? 1 : pt_.batches;
+  for (int i = 0; i < batches; ++i) {
+    batches_.emplace_back(in, kernels_, (capacity_ + size_t(batches) - 1) / size_t(batches), i % Context::kQueues);
+  }
   if (pt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
 }
 
@@ -47,56 +60,91 @@ GdrPtParams PathTracer::params(const RenderSettings& settings, uint32_t sample, 
   return p;
 }
 
-void PathTracer::generate(const GdrPtParams& params) {
-  generate_.args(in_.device_scene.camera(), params, queues_.rays[0], queues_.slots[0], paths_).run(params.pixel_count);
+void PathTracer::generate(Batch& b, const GdrPtParams& params) {
+  if (params.pixel_count > b.paths.size()) {
+    throw Error("pt: " + std::to_string(params.pixel_count) + " paths for a batch of " +
+                std::to_string(b.paths.size()));
+  }
+  generate_.args(in_.device_scene.camera(), params, b.queues.rays[0], b.queues.slots[0], b.paths)
+      .run(params.pixel_count);
 }
 
-void PathTracer::intersect(int cur, cl_uint active, bool camera) {
-  gdr::intersect(in_.embree, queues_.rays[cur], active, camera, camera ? "camera" : "bounce");
+void PathTracer::intersect(Batch& b, int cur, cl_uint active, bool camera) {
+  gdr::intersect(in_.embree, b.queues.rays[cur], active, camera, camera ? "camera" : "bounce");
+}
+
+void PathTracer::enqueue_shade(Batch& b, const GdrPtParams& params, int cur, cl_uint active) {
+  b.counters.reset();
+  if (!b.materials.direct()) {
+    route_
+        .args(params, active, b.queues.rays[cur], b.queues.slots[cur], b.materials.keys(), b.paths,
+              film_["radiance"], b.counters.buffer(), in_.device_scene)
+        .run(active);
+  }
+  for (const MaterialQueues::Queue& q : b.materials.route(active)) {
+    q.kernel
+        ->args(params, q.count, cl_int(b.materials.direct()), *q.entries, b.queues.rays[cur], b.queues.slots[cur],
+               b.queues.rays[1 - cur], b.queues.slots[1 - cur], b.shadow_rays, b.shadow_values, b.paths,
+               film_["radiance"], b.counters.buffer(), in_.device_scene)
+        .run(q.count);
+  }
 }
 
 const std::vector<cl_uint>& PathTracer::shade(const GdrPtParams& params, int cur, cl_uint active) {
-  counters_.reset();
-  if (!materials_.direct()) {
-    route_
-        .args(params, active, queues_.rays[cur], queues_.slots[cur], materials_.keys(), paths_, film_["radiance"],
-              counters_.buffer(), in_.device_scene)
-        .run(active);
-  }
-  for (const MaterialQueues::Queue& q : materials_.route(active)) {
-    q.kernel
-        ->args(params, q.count, cl_int(materials_.direct()), *q.entries, queues_.rays[cur],
-               queues_.slots[cur], queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, shadow_values_,
-               paths_, film_["radiance"], counters_.buffer(), in_.device_scene)
-        .run(q.count);
-  }
-  return counters_.read();
+  enqueue_shade(batches_[0], params, cur, active);
+  return batches_[0].counters.read();
 }
 
-void PathTracer::occlude(cl_uint shadows) { gdr::occlude(in_.embree, shadow_rays_, shadows, "shadow"); }
+void PathTracer::occlude(Batch& b, cl_uint shadows) { gdr::occlude(in_.embree, b.shadow_rays, shadows, "shadow"); }
 
-void PathTracer::add_shadows(cl_uint shadows) {
-  shadow_.args(shadows, shadow_rays_, shadow_values_, film_["radiance"]).run(shadows);
+void PathTracer::add_shadows(Batch& b, cl_uint shadows) {
+  shadow_.args(shadows, b.shadow_rays, b.shadow_values, film_["radiance"]).run(shadows);
+}
+
+void PathTracer::step(Batch& b) {
+  QueueScope scope(in_.context, b.command_queue);
+  if (b.shading) {
+    b.counters.read();
+    const cl_uint shadows = b.counters[PT_COUNTER_SHADOW_RAYS];
+    if (shadows > 0) {
+      occlude(b, shadows);
+      add_shadows(b, shadows);
+    }
+    b.active = b.counters[PT_COUNTER_NEXT_RAYS];
+    b.cur = 1 - b.cur;
+    ++b.depth;
+    b.shading = false;
+  }
+  if (b.active == 0) return;
+  intersect(b, b.cur, b.active, b.depth == 0);
+  if (b.depth == 0 && aux_) aux_->add(b.params, b.queues.rays[b.cur], b.active, in_.device_scene);
+  enqueue_shade(b, b.params, b.cur, b.active);
+  b.shading = true;
 }
 
 void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
-  GdrPtParams p = params(settings, sample, first, count);
-  generate(p);
-  cl_uint active = count;
-  int cur = 0;
-  for (int depth = 0; active > 0; ++depth) {
-    intersect(cur, active, depth == 0);
-    if (depth == 0 && aux_) aux_->add(p, queues_.rays[cur], active, in_.device_scene);
-    shade(p, cur, active);
-    cl_uint shadows = counters_[PT_COUNTER_SHADOW_RAYS];
-    if (shadows > 0) {
-      occlude(shadows);
-      add_shadows(shadows);
-    }
-    active = counters_[PT_COUNTER_NEXT_RAYS];
-    cur = 1 - cur;
+  // Consecutive pixel ranges, one a batch: every pixel's film entry is written by one batch.
+  const uint32_t per = (count + uint32_t(batches_.size()) - 1) / uint32_t(batches_.size());
+  for (uint32_t i = 0, start = first; i < batches_.size(); ++i, start += per) {
+    Batch& b = batches_[i];
+    const uint32_t n = start < first + count ? std::min(per, first + count - start) : 0;
+    b.params = params(settings, sample, start, n);
+    b.active = n;
+    b.cur = b.depth = 0;
+    b.shading = false;
+    if (n == 0) continue;
+    QueueScope scope(in_.context, b.command_queue);
+    generate(b, b.params);
   }
-  counters_.report(in_.context.stats());
+  for (bool busy = true; busy;) {
+    busy = false;
+    for (Batch& b : batches_) {
+      if (b.active == 0 && !b.shading) continue;
+      step(b);
+      busy = true;
+    }
+  }
+  for (Batch& b : batches_) b.counters.report(in_.context.stats());
 }
 
 RenderResult PathTracer::render(const RenderSettings& settings) {
