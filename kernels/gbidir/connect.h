@@ -59,8 +59,8 @@ __kernel void gbdpt_connect(GdrGptParams params, uint count, uint j, uint stride
       ConnectionEnd eo = connection_end(&s, &rec.offset[k]);
       formed = bidir_connection_ends(&eo, &rec.offset[k], &ey, &y, &o, &cy);
     }
-    float2 oy = formed ? (float2)(cy.others, gbdpt_connection_all_others(&cy, rec.all_dvcm[1 + k], rec.all_dvc[1 + k], &o))
-                       : (float2)(0.0f);
+    float2 oy = (float2)(0.0f);
+    if (formed) oy = (float2)(cy.others, gbdpt_connection_all_others(&cy, rec.all_dvcm[1 + k], rec.all_dvc[1 + k], &o));
     float2 w = gbdpt_pair_weights(ox, oy, rec.ratio[k], formed);
     float3 cb = checked(w.x * cx.value, nonfinite), co = checked(w.y * cy.value, nonfinite);
     pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);

@@ -193,7 +193,8 @@ inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, f
   if (!(cos2 > 0.0f)) return;
   float arrive = cos1 / cos2, emit = 1.0f, length2 = 1.0f;
   if (pa->kind == GPM_PARENT_LIGHT) {
-    float pdf = light_emission_pdf_dir(s, pa->light, pa->ng, w), pdf2 = light_emission_pdf_dir(s, pa->light, pa->ng, w2);
+    float pdf = light_emission_pdf_dir(s, pa->light, pa->ng, w);
+    float pdf2 = light_emission_pdf_dir(s, pa->light, pa->ng, w2);
     if (!(pdf2 > 0.0f)) return;
     emit = pdf / pdf2;
     float3 d = py - pa->p, d2 = sy2->p - pa->p;

@@ -253,7 +253,8 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       }
       float r = formed ? o[k].ratio : 0.0f;
 #if defined(GDR_GBDPT)
-      float2 others_y = formed ? gbdpt_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, &o[k].mis, &mo) : (float2)(0.0f);
+      float2 others_y = (float2)(0.0f);
+      if (formed) others_y = gbdpt_light_point_others(&s, &bo, wol, wil, ng_o, light, &lo, &o[k].mis, &mo);
       float2 w = gbdpt_pair_weights(others_x, others_y, r, formed);
       float w_base = w.x, w_off = w.y;
 #else

@@ -1,6 +1,5 @@
 #include "integrators/gbidir/gradient_bidirectional.h"
 
-
 namespace gdr {
 namespace {
 

@@ -84,7 +84,9 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
     manifold_.emplace(in, kernels_, program(), capacity_ * GPT_OFFSETS, gpt.manifold);
     join_.emplace(kernels_.make(program(), "gpt_manifold_join"));
   }
-  if (kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
+  if (kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging) {
+    connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
+  }
   if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
 }
 
