@@ -2,7 +2,8 @@
 // recorded by the shade step: gbidir/camera_vertex.h) the photons within the radius make pm's
 // density estimate for the base, and each offset's estimate at its own visible point comes from
 // the same photons shifted (gbidir/photon_shift.h). Three launches over the recorded groups:
-//   gpm_count        the photons each base merges with (the host scans the counts into starts);
+//   gpm_count        the photons each base merges with, where an offset can take them shifted
+//                    (the host scans the counts into starts);
 //   gpm_shift_rays   for each of them and each offset, the ray that finds the offset photon
 //                    (rays[4 (start + i) + k]), or a ray Embree skips where the shift is refused;
 //   gpm_merge        after Embree: base and offset values under the pair weight
@@ -59,8 +60,15 @@ __kernel void gpm_count(GdrGptParams params, GdrBidirOptions opts, uint count, _
   uint q = get_global_id(0);
   if (q == 0) counts[count] = 0;  // the scan's total lands there
   if (q >= count) return;
+  // Rays only for the groups with an offset at a merge point of its own: the others' offsets merge
+  // the base's photons or none.
+  GbdptCameraVertex rec = records[connectable[q]];
+  int shifting = 0;
+  for (int k = 0; k < GPT_OFFSETS; ++k) shifting |= merge_own_point(rec.state[k]);
+  counts[q] = 0;
+  if (!shifting) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
-  GdrBidirVertex z = records[connectable[q]].base;
+  GdrBidirVertex z = rec.base;
   PhotonQuery pq = photon_query(surface_at(&s, z.prim, z.u, z.v).p, opts.radius, buckets);
   uint n = 0, e;
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
@@ -81,12 +89,13 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   GbdptCameraVertex rec = records[connectable[q]];
   Surface sx = surface_at(&s, rec.base.prim, rec.base.u, rec.base.v);
   Surface so[GPT_OFFSETS];
-  int shifting = 0;  // some offset can take a shifted photon (else no parent is looked up)
+  int shifting = 0;  // some offset can take a shifted photon
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     if (!merge_own_point(rec.state[k])) continue;
     so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
     shifting = 1;
   }
+  if (!shifting) return;  // no rays counted for the group (gpm_count)
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
   PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
   while (photon_query_next(&pq, starts, sorted, points, &e)) {

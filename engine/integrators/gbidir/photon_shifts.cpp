@@ -23,12 +23,14 @@ PhotonShifts::PhotonShifts(const RenderInputs& in, const GradientGroups& groups)
       shift_rays_(in.context, kMaxShiftRays, kRayQueueFlags) {}
 
 void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count,
-                               size_t merged, GradientGroups& groups, const PhotonGrid& g) {
-  rays_
-      .args(p, o, first, count, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted,
-            g.buckets, g.origins, g.stride, starts_, shift_rays_, cl_uint(kMaxShiftRays), in_.device_scene)
-      .run(count);
-  intersect(in_.embree, shift_rays_, std::min(kMaxShiftRays, merged * GPT_OFFSETS), false, "photon_shift");
+                               size_t shifted, GradientGroups& groups, const PhotonGrid& g) {
+  if (shifted > 0) {
+    rays_
+        .args(p, o, first, count, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted,
+              g.buckets, g.origins, g.stride, starts_, shift_rays_, cl_uint(kMaxShiftRays), in_.device_scene)
+        .run(count);
+    intersect(in_.embree, shift_rays_, std::min(kMaxShiftRays, shifted * GPT_OFFSETS), false, "photon_shift");
+  }
   groups.counters().reset();
   merge_
       .args(p, o, first, count, groups.connectable(), groups.records(), groups.bases(), g.store, g.points, g.starts,
@@ -46,8 +48,8 @@ void PhotonShifts::merge(const GdrGptParams& p, const GdrBidirOptions& o, cl_uin
       .args(p, o, recorded, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted, g.buckets,
             starts_, in_.device_scene)
       .run(recorded);
+  // The photons whose shifts need rays; the merges of the other groups need none.
   const cl_uint total = primitives_.exclusive_scan(starts_, size_t(recorded) + 1);
-  if (total == 0) return;
   const size_t per_slice = kMaxShiftRays / GPT_OFFSETS;
   if (total <= per_slice) {
     merge_slice(p, o, 0, recorded, total, groups, g);

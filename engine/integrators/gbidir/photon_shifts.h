@@ -1,7 +1,8 @@
-// G-PM's merge stage (kernels/gbidir/merge.h): after a shade step of merging groups, the photons
-// within the radius of each recorded visible point are merged for the base, and shifted to each
-// offset's visible point by a ray from the photon's parent (Embree), then merged there. The rays
-// of one launch are bounded: the recorded groups go in slices whose photons' rays fit.
+// G-PM's merge stage (kernels/gbidir/merge.h; G-VCM's too): after a shade step of merging groups,
+// the photons within the radius of each recorded vertex are merged for the base, and shifted to
+// each offset's own vertex by a ray from the photon's parent (Embree), then merged there (offsets
+// at the base's vertex merge the same photons: no rays). The rays of one launch are bounded: the
+// recorded groups go in slices whose photons' rays fit.
 #pragma once
 #include "integrators/bidir/subpaths.h"
 #include "integrators/gpt/gradient_groups.h"
@@ -20,14 +21,14 @@ class PhotonShifts {
 
  private:
   // Groups [first, first + count) of the recorded list, whose rays start at starts[first];
-  // `merged`: their photons (four rays each).
-  void merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count, size_t merged,
+  // `shifted`: their photons that need rays (four each).
+  void merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count, size_t shifted,
                    GradientGroups& groups, const PhotonGrid& photons);
 
   RenderInputs in_;
   Kernel count_, rays_, merge_;
   DevicePrimitives primitives_;
-  Buffer<cl_uint> starts_;       // the recorded groups' first photon, a scan of their counts
+  Buffer<cl_uint> starts_;       // the recorded groups' first photon with rays, a scan of their counts
   Buffer<GdrRayHit> shift_rays_;  // four a photon
 };
 
