@@ -125,10 +125,10 @@ __attribute__((always_inline)) inline void pt_shade_hit(
   spawn_ray(&rays_out[k], su.p, su.ng, wi, slot);
 }
 
-// pt_shade_<material>: the queue entries sorted[0, count) of one material (or, with `direct`, the
-// queue's entries [0, count) themselves: the scene has one material type).
+// pt_shade_<material>: the queue entries sorted[first, first + count) of one material (or, with
+// `direct`, the queue's entries [0, count) themselves: the scene has one material type).
 #define PT_SHADE_QUEUE(name, TYPE)                                                                            \
-  __kernel void pt_shade_##name(GdrPtParams params, uint count, int direct,                                  \
+  __kernel void pt_shade_##name(GdrPtParams params, uint count, uint first, int direct,                      \
                                 __global const uint* sorted, __global const GdrRayHit* rays_in,              \
                                 __global const uint* queue_in, __global GdrRayHit* rays_out,                 \
                                 __global uint* queue_out, __global GdrRay* shadow_rays,                      \
@@ -137,7 +137,7 @@ __attribute__((always_inline)) inline void pt_shade_hit(
     uint i = get_global_id(0);                                                                               \
     if (i >= count) return;                                                                                  \
     SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                     \
-    pt_shade_hit(params, direct ? i : sorted[i], TYPE, direct, rays_in, queue_in, rays_out,                     \
+    pt_shade_hit(params, direct ? i : sorted[first + i], TYPE, direct, rays_in, queue_in, rays_out,             \
                  queue_out, shadow_rays, shadow_values, paths, film, counters, &s);                          \
   }
 GDR_MATERIAL_QUEUES(PT_SHADE_QUEUE)

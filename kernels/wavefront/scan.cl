@@ -38,17 +38,32 @@ __kernel void compact_scatter(__global const uint* flags, __global const uint* o
   if (i < n && flags[i]) out[offsets[i]] = items[i];
 }
 
-// Selection by key, step 1: flags[i] = (keys[i] == key), scanned next into the output positions.
-__kernel void key_flags(__global const uint* keys, uint n, uint key, __global uint* flags) {
+// Selection by several keys at once (key_list[t], t < key_count), step 1: flags[t n + i] = 1 where
+// keys[i] is key t, and the entry past them 0 (its scan is the total).
+__kernel void keys_flags(__global const uint* keys, uint n, __global const uint* key_list, uint key_count,
+                         __global uint* flags) {
   uint i = get_global_id(0);
-  if (i < n) flags[i] = keys[i] == key ? 1u : 0u;
+  if (i == 0) flags[key_count * n] = 0u;
+  if (i >= n) return;
+  uint k = keys[i];
+  for (uint t = 0; t < key_count; ++t) flags[t * n + i] = k == key_list[t] ? 1u : 0u;
 }
 
-// Step 2: out lists the indices i with keys[i] == key, in order (offsets: the scanned flags).
-__kernel void key_scatter(__global const uint* keys, uint n, uint key, __global const uint* offsets,
-                          __global uint* out) {
+// Step 2 (offsets: the scanned flags): out lists key t's indices in order from offsets[t n] on.
+__kernel void keys_scatter(__global const uint* keys, uint n, __global const uint* key_list, uint key_count,
+                           __global const uint* offsets, __global uint* out) {
   uint i = get_global_id(0);
-  if (i < n && keys[i] == key) out[offsets[i]] = i;
+  if (i >= n) return;
+  uint k = keys[i];
+  for (uint t = 0; t < key_count; ++t) {
+    if (k == key_list[t]) out[offsets[t * n + i]] = i;
+  }
+}
+
+// Step 3: starts[t] = offsets[t n], t <= key_count (starts[key_count]: the total).
+__kernel void keys_starts(__global const uint* offsets, uint n, uint key_count, __global uint* starts) {
+  uint t = get_global_id(0);
+  if (t <= key_count) starts[t] = offsets[t * n];
 }
 
 // Counting sort by key, step 1: how many items each key has (keys >= buckets are left out).

@@ -54,21 +54,29 @@ TEST(DevicePrimitives, CompactKeepsOrder) {
   }
 }
 
-TEST(DevicePrimitives, SelectKeyKeepsOrder) {
+// Keys 0..4 of which three are selected (one of them absent from the items: an empty range);
+// the others are left out.
+TEST(DevicePrimitives, SelectKeysKeepsOrder) {
   Context& ctx = test::default_context();
   DevicePrimitives prim(ctx);
+  const std::vector<cl_uint> selected = {3u, 0u, 7u};
+  Buffer<cl_uint> key_buffer(ctx, selected);
   for (size_t n : kSizes) {
-    std::vector<cl_uint> keys = random_values(n, 4, uint32_t(n) + 4);
-    Buffer<cl_uint> k(ctx, keys), offsets(ctx, n), out(ctx, n);
-    for (cl_uint key : {0u, 3u, 4u}) {
-      cl_uint count = prim.select_key(k, n, key, offsets, out);
+    std::vector<cl_uint> keys = random_values(n, 5, uint32_t(n) + 4);
+    Buffer<cl_uint> k(ctx, keys), offsets(ctx, selected.size() * n + 1), out(ctx, std::max<size_t>(n, 1));
+    std::vector<cl_uint> starts = prim.select_keys(k, n, key_buffer, offsets, out);
+    ASSERT_EQ(starts.size(), selected.size() + 1);
+    std::vector<cl_uint> got = out.read();
+    cl_uint start = 0;
+    for (size_t t = 0; t < selected.size(); ++t) {
       std::vector<cl_uint> want;
       for (size_t i = 0; i < n; ++i)
-        if (keys[i] == key) want.push_back(cl_uint(i));
-      ASSERT_EQ(count, want.size()) << n << " items, key " << key;
-      std::vector<cl_uint> got = out.read();
-      got.resize(count);
-      EXPECT_EQ(got, want) << n << " items, key " << key;
+        if (keys[i] == selected[t]) want.push_back(cl_uint(i));
+      ASSERT_EQ(starts[t], start) << n << " items, key " << selected[t];
+      ASSERT_EQ(starts[t + 1] - starts[t], want.size()) << n << " items, key " << selected[t];
+      EXPECT_EQ(std::vector<cl_uint>(got.begin() + starts[t], got.begin() + starts[t + 1]), want)
+          << n << " items, key " << selected[t];
+      start = starts[t + 1];
     }
   }
 }

@@ -83,9 +83,9 @@ void PathTracer::enqueue_shade(Batch& b, const GdrPtParams& params, int cur, cl_
   }
   for (const MaterialQueues::Queue& q : b.materials.route(active)) {
     q.kernel
-        ->args(params, q.count, cl_int(b.materials.direct()), *q.entries, b.queues.rays[cur], b.queues.slots[cur],
-               b.queues.rays[1 - cur], b.queues.slots[1 - cur], b.shadow_rays, b.shadow_values, b.paths,
-               film_["radiance"], b.counters.buffer(), in_.device_scene)
+        ->args(params, q.count, q.first, cl_int(b.materials.direct()), b.materials.entries(), b.queues.rays[cur],
+               b.queues.slots[cur], b.queues.rays[1 - cur], b.queues.slots[1 - cur], b.shadow_rays, b.shadow_values,
+               b.paths, film_["radiance"], b.counters.buffer(), in_.device_scene)
         .run(q.count);
   }
 }

@@ -7,22 +7,30 @@ namespace gdr {
 MaterialQueues::MaterialQueues(Context& ctx, const Scene& scene, const KernelFactory& kernels,
                                const std::string& program, const std::string& stage, size_t capacity)
     : primitives_(ctx) {
+  std::vector<cl_uint> types;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
-    if (scene.features.bsdf[t]) kinds_.push_back({t, kernels.make(program, stage + "_" + bsdf_type_name(t)), {}});
+    if (!scene.features.bsdf[t]) continue;
+    kinds_.push_back({t, kernels.make(program, stage + "_" + bsdf_type_name(t))});
+    types.push_back(cl_uint(t));
   }
   if (!direct()) {
+    types_ = Buffer<cl_uint>(ctx, types);
     keys_ = Buffer<cl_uint>(ctx, capacity);
-    scratch_ = Buffer<cl_uint>(ctx, capacity);
-    for (Kind& k : kinds_) k.entries = Buffer<cl_uint>(ctx, capacity);
+    scratch_ = Buffer<cl_uint>(ctx, types.size() * capacity + 1);
+    entries_ = Buffer<cl_uint>(ctx, capacity);
   }
 }
 
 const std::vector<MaterialQueues::Queue>& MaterialQueues::route(cl_uint n) {
   queues_.clear();
   if (n == 0) return queues_;
-  for (Kind& k : kinds_) {
-    const cl_uint count = direct() ? n : primitives_.select_key(keys_, n, cl_uint(k.type), scratch_, k.entries);
-    if (count > 0) queues_.push_back({count, &k.entries, &k.kernel});
+  if (direct()) {
+    queues_.push_back({n, 0, &kinds_[0].kernel});
+    return queues_;
+  }
+  const std::vector<cl_uint> starts = primitives_.select_keys(keys_, n, types_, scratch_, entries_);
+  for (size_t i = 0; i < kinds_.size(); ++i) {
+    if (starts[i + 1] > starts[i]) queues_.push_back({starts[i + 1] - starts[i], starts[i], &kinds_[i].kernel});
   }
   return queues_;
 }

@@ -1,9 +1,10 @@
 // Per-material queues (pbrt-v4's wavefront design): after an intersection an integrator's routing
 // kernel writes each queue entry's key, its hit's BSDF type (kernels/path/material_queues.h), and
 // the entries of each type the scene has become that type's queue (in order: the images do not
-// depend on the routing). Each queue is shaded by its own kernel, `<stage>_<type>` (e.g.
-// pt_shade_diffuse), specialized for that material; a type the scene lacks has no queue and no
-// launch. With one type there is nothing to route: its kernel takes the whole queue (direct).
+// depend on the routing), all types selected together with one read of their counts. Each queue
+// is shaded by its own kernel, `<stage>_<type>` (e.g. pt_shade_diffuse), specialized for that
+// material; a type the scene lacks has no queue and no launch. With one type there is nothing to
+// route: its kernel takes the whole queue (direct).
 #pragma once
 #include <string>
 #include <vector>
@@ -22,13 +23,16 @@ class MaterialQueues {
 
   struct Queue {
     cl_uint count;                  // entries
-    const Buffer<cl_uint>* entries; // their positions in the routed queue (unused when direct)
+    cl_uint first;                  // where they start in entries() (0 when direct)
     Kernel* kernel;
   };
 
   // The routing kernel's output: each entry's key (BSDF type, or BSDF_TYPE_COUNT for none); only
   // where routing is needed (not direct).
   Buffer<cl_uint>& keys() { return keys_; }
+  // The routed entries' positions in the routed queue, each type's from its queue's `first` on
+  // (unused when direct).
+  const Buffer<cl_uint>& entries() const { return entries_; }
   // No routing: the scene has one material type, whose kernel takes the queue as it is.
   bool direct() const { return kinds_.size() == 1; }
   // The non-empty queues of the first n routed entries (direct: the one type's, all n entries).
@@ -38,10 +42,10 @@ class MaterialQueues {
   struct Kind {
     int type;
     Kernel kernel;
-    Buffer<cl_uint> entries;
   };
   std::vector<Kind> kinds_;  // one per type the scene has
-  Buffer<cl_uint> keys_, scratch_;
+  Buffer<cl_uint> types_;    // and their types, on the device
+  Buffer<cl_uint> keys_, scratch_, entries_;
   DevicePrimitives primitives_;
   std::vector<Queue> queues_;
 };
