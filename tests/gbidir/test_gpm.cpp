@@ -1,17 +1,16 @@
 // Gradient-domain photon mapping (`gpm`) is consistent. On the diffuse Cornell box (32 x 32,
 // max_depth 6), against a long path-traced reference (4096 spp, seed 500;
-// support/consistent_gradients.h): the error of its
-// gradients (dx, dy plus the differences of the directly seen emission, kept out of them) against
-// the reference's neighbour differences, and the error of its primal and of its reconstruction,
-// fall as the passes grow (4, 16, 64: the radius shrinks and the estimates add up); its gradients
-// beat the differences of pm's image at equal passes (the photon shift correlates the pair); the
-// mean of 8 runs' gradients lies close to the reference's differences (no bias the shift adds);
-// its primal agrees with pm's at equal passes (the mean brightness of 8 runs each). The same
-// gradient and primal checks on a uniform sky over diffuse spheres cover the photons of lights at
-// infinity. The runs are
-// fixed by their seeds; the bounds hold with margin over what those runs measure (see the
-// comments), so the tests fail on a wrong shift, weight or normalization rather than by chance.
-// Also: failed shifts are counted by reason, and the parameters are checked.
+// support/consistent_gradients.h): the error of its gradients (dx, dy plus the differences of the
+// directly seen emission, kept out of them) against the reference's neighbour differences, and
+// the error of its primal and of its reconstruction, fall as the passes grow (4, 16, 64: the
+// radius shrinks and the estimates add up); its gradients beat the differences of pm's image at
+// equal passes (the photon shift correlates the pair); the mean of 8 runs' gradients lies close
+// to the reference's differences (no bias the shift adds); its primal agrees with pm's at equal
+// passes (the mean brightness of 8 runs each). The same gradient and primal checks on a uniform
+// sky over diffuse spheres cover the photons of lights at infinity. The runs are fixed by their
+// seeds; the bounds hold with margin over what those runs measure (see the comments), so the
+// tests fail on a wrong shift, weight or normalization rather than by chance. Also: failed shifts
+// are counted by reason, and the parameters are checked.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,8 +50,6 @@ ConsistencyScene& box() {
   return *b;
 }
 
-RenderSettings settings(int spp, uint32_t seed) { return consistency_settings(spp, seed); }
-
 TEST(Gpm, ErrorFallsAsPassesGrow) {
   GradientPhotonMapping gpm(box().on_device.inputs(), gpm_settings({}));
   test::ConsistencyErrors previous{INFINITY, INFINITY, INFINITY};
@@ -77,7 +74,7 @@ void expect_gradients_beat_pm(ConsistencyScene& b, const char* what, double fact
   for (int spp : {4, 16}) {
     double e_pm = 0, e_gpm = 0;
     for (uint32_t seed = 1; seed <= 2; ++seed) {
-      e_pm += b.image_gradient_relmse(pm.render(settings(spp, seed)).image.rgb_layer(""));
+      e_pm += b.image_gradient_relmse(pm.render(consistency_settings(spp, seed)).image.rgb_layer(""));
       e_gpm += consistency_errors(gpm, spp, seed, b).gradients;
     }
     EXPECT_LT(e_gpm, factor * e_pm) << what << " at " << spp << " passes";
@@ -104,8 +101,8 @@ void expect_primal_agrees_with_pm(ConsistencyScene& b, const char* what) {
   Bidirectional pm(b.on_device.inputs(), pm_settings({}));
   double sum_gpm = 0, sum_pm = 0;
   for (uint32_t seed = 1; seed <= 8; ++seed) {
-    sum_gpm += mean(gpm.render_gradients(settings(16, seed)).primal);
-    sum_pm += mean(pm.render(settings(16, seed)).image.rgb_layer(""));
+    sum_gpm += mean(gpm.render_gradients(consistency_settings(16, seed)).primal);
+    sum_pm += mean(pm.render(consistency_settings(16, seed)).image.rgb_layer(""));
   }
   EXPECT_NEAR(sum_gpm / sum_pm, 1.0, 0.01) << what;
 }
@@ -129,7 +126,7 @@ void expect_counted(const std::string& file, bool delta_parents) {
   Context ctx(select_device(""), &stats);
   test::SceneOnDevice on_device(scene, &stats, ctx);
   GradientPhotonMapping gpm(on_device.inputs(), gpm_settings({}));
-  gpm.render_gradients(settings(2, 7));
+  gpm.render_gradients(consistency_settings(2, 7));
   EXPECT_GT(stats.count("gpm/merges"), 0u) << file;
   EXPECT_EQ(stats.count("shift_failures/photon_parent") > 0, delta_parents) << file;
   EXPECT_EQ(stats.count("samples/nonfinite_rejected"), 0u) << file;
