@@ -10,7 +10,7 @@ MaterialQueues::MaterialQueues(Context& ctx, const Scene& scene, const KernelFac
   std::vector<cl_uint> types;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
     if (!scene.features.bsdf[t]) continue;
-    kinds_.push_back({t, kernels.make(program, stage + "_" + bsdf_type_name(t))});
+    kinds_.push_back(kernels.make(program, stage + "_" + bsdf_type_name(t)));
     types.push_back(cl_uint(t));
   }
   if (!direct()) {
@@ -25,12 +25,12 @@ const std::vector<MaterialQueues::Queue>& MaterialQueues::route(cl_uint n) {
   queues_.clear();
   if (n == 0) return queues_;
   if (direct()) {
-    queues_.push_back({n, 0, &kinds_[0].kernel});
+    queues_.push_back({n, 0, &kinds_[0]});
     return queues_;
   }
   const std::vector<cl_uint> starts = primitives_.select_keys(keys_, n, types_, scratch_, entries_);
   for (size_t i = 0; i < kinds_.size(); ++i) {
-    if (starts[i + 1] > starts[i]) queues_.push_back({starts[i + 1] - starts[i], starts[i], &kinds_[i].kernel});
+    if (starts[i + 1] > starts[i]) queues_.push_back({starts[i + 1] - starts[i], starts[i], &kinds_[i]});
   }
   return queues_;
 }

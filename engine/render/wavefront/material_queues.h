@@ -39,12 +39,8 @@ class MaterialQueues {
   const std::vector<Queue>& route(cl_uint n);
 
  private:
-  struct Kind {
-    int type;
-    Kernel kernel;
-  };
-  std::vector<Kind> kinds_;  // one per type the scene has
-  Buffer<cl_uint> types_;    // and their types, on the device
+  std::vector<Kernel> kinds_;  // one shading kernel per type the scene has
+  Buffer<cl_uint> types_;      // and those types, on the device
   Buffer<cl_uint> keys_, scratch_, entries_;
   DevicePrimitives primitives_;
   std::vector<Queue> queues_;
