@@ -152,7 +152,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
                              ->group("Integrator parameters");
   param("--batches", "batches",
-        "pt: batches of paths a chunk, stepped in turn so that the device shades one while Embree traces the "
+        "batches of paths a chunk, stepped in turn so that the device shades one while Embree traces the "
         "other: 1 | 2 (default)")
       ->check(CLI::IsMember({"1", "2"}));
   param("--chains", "chains", "Markov chains run side by side (default: one a pixel, at most 32768)")->check(CLI::Range(1, 1 << 30));
