@@ -39,6 +39,11 @@ class Context {
   int current_queue() const { return current_; }
   void select_queue(int index) { current_ = index; }
   Stats* stats() const { return stats_; }
+  // Whether the host works on ray queues in place (mapped: CPU devices, and devices in the host's
+  // memory) or copies them to and from the device around Embree's traversal (a discrete GPU:
+  // timed as transfers). Ray queues made after a change follow it.
+  bool zero_copy() const { return zero_copy_; }
+  void set_zero_copy(bool on) { zero_copy_ = on; }
 
   // Builds kernels/<root> with `defines`; the same (root, defines) is built once per Context.
   // Throws DeviceError with the compiler log (file:line of the kernel source) on failure.
@@ -66,6 +71,7 @@ class Context {
   cl_context context_ = nullptr;
   cl_command_queue queues_[kQueues] = {};
   int current_ = 0;
+  bool zero_copy_ = false;
   std::map<std::string, std::shared_ptr<Program>> programs_;
   std::map<std::string, std::shared_ptr<void>> kept_;
   friend class Kernel;
@@ -233,6 +239,7 @@ class Buffer {
 
   size_t size() const { return count_; }
   cl_mem handle() const { return mem_; }
+  Context& context() const { return *context_; }
 
   void write(const T* data, size_t count, size_t offset = 0) {
     if (count == 0) return;

@@ -82,6 +82,9 @@ std::vector<DeviceInfo> list_devices() {
       clGetDeviceInfo(d, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof(info.global_memory), &info.global_memory, nullptr);
       clGetDeviceInfo(d, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof(info.max_alloc), &info.max_alloc, nullptr);
       info.fp64 = (" " + device_string(d, CL_DEVICE_EXTENSIONS) + " ").find(" cl_khr_fp64 ") != std::string::npos;
+      cl_bool unified = CL_FALSE;
+      clGetDeviceInfo(d, CL_DEVICE_HOST_UNIFIED_MEMORY, sizeof(unified), &unified, nullptr);
+      info.host_unified = unified == CL_TRUE;
       out.push_back(info);
     }
   }

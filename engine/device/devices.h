@@ -20,6 +20,7 @@ struct DeviceInfo {
   cl_ulong global_memory = 0;
   cl_ulong max_alloc = 0;  // CL_DEVICE_MAX_MEM_ALLOC_SIZE: the largest single buffer
   bool fp64 = false;       // cl_khr_fp64: double-precision kernels
+  bool host_unified = false;  // CL_DEVICE_HOST_UNIFIED_MEMORY: the device works in the host's memory
 };
 
 // All devices of all platforms; an empty list when there is no OpenCL platform at all.

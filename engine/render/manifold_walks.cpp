@@ -66,7 +66,8 @@ ManifoldWalks::ManifoldWalks(const RenderInputs& in, const KernelFactory& kernel
       accept_(kernels.make(program, "manifold_accept")),
       states_(in.context, capacity * MANIFOLD_STATE_WORDS),
       active_{Buffer<cl_uint>(in.context, capacity), Buffer<cl_uint>(in.context, capacity)},
-      rays_{Buffer<GdrRayHit>(in.context, capacity, kRayQueueFlags), Buffer<GdrRayHit>(in.context, capacity, kRayQueueFlags)},
+      rays_{Buffer<GdrRayHit>(in.context, capacity, ray_queue_flags(in.context)),
+            Buffer<GdrRayHit>(in.context, capacity, ray_queue_flags(in.context))},
       counters_(in.context, GDR_COUNTER_NAMES(MANIFOLD_COUNTERS)) {
   params_.tolerance = float(settings.tolerance * in.scene.bounding_radius());
   params_.max_iterations = settings.max_iterations;

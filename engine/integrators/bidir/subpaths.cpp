@@ -35,7 +35,7 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
       store_(in.context, capacity_ * size_t(store_vertices_)),
       camera_vertices_(in.context, lt() ? 0 : capacity_),
       connectable_(in.context, lt() ? 0 : capacity_),
-      shadow_rays_(in.context, capacity_, kRayQueueFlags),
+      shadow_rays_(in.context, capacity_, ray_queue_flags(in.context)),
       shadow_values_(in.context, lt() ? 0 : capacity_),
       counters_(in.context, GDR_COUNTER_NAMES(BIDIR_COUNTERS)) {
   if (merges()) {

@@ -20,7 +20,7 @@ PhotonShifts::PhotonShifts(const RenderInputs& in, const GradientGroups& groups)
       merge_(groups.kernels().make(groups.program(), "gpm_merge")),
       primitives_(in.context),
       starts_(in.context, groups.capacity() + 1),
-      shift_rays_(in.context, kMaxShiftRays, kRayQueueFlags) {}
+      shift_rays_(in.context, kMaxShiftRays, ray_queue_flags(in.context)) {}
 
 void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint first, cl_uint count,
                                size_t shifted, GradientGroups& groups, const PhotonGrid& g) {

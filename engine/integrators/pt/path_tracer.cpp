@@ -33,7 +33,7 @@ PathTracer::Batch::Batch(const RenderInputs& in, const KernelFactory& kernels, s
     : command_queue(command_queue),
       queues(in.context, capacity, true),
       paths(in.context, capacity),
-      shadow_rays(in.context, capacity, kRayQueueFlags),
+      shadow_rays(in.context, capacity, ray_queue_flags(in.context)),
       shadow_values(in.context, capacity),
       counters(in.context, GDR_COUNTER_NAMES(PT_COUNTERS)),
       materials(in.context, in.scene, kernels, kProgram, "pt_shade", capacity) {}

@@ -1,6 +1,7 @@
 // The ray queues of a wavefront, double-buffered: a step's kernels read queue `cur` and write
-// the next bounce into queue 1 - cur. Embree traverses them on the host in place (zero-copy
-// mappings on CPU devices).
+// the next bounce into queue 1 - cur. Embree traverses them on the host: in place where the
+// context is zero-copy (CPU devices: mapped), else on a host copy read before and written back
+// after (a discrete GPU: the transfers are timed as such).
 #pragma once
 #include <string>
 
@@ -10,8 +11,9 @@
 
 namespace gdr {
 
-// Host-mapped memory, so that Embree reads and writes the device's rays without a copy on CPUs.
-constexpr cl_mem_flags kRayQueueFlags = CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR;
+// Zero-copy contexts: host-mapped memory, so that Embree reads and writes the device's rays in
+// place; others: device memory, copied around each traversal.
+cl_mem_flags ray_queue_flags(const Context& context);
 
 struct RayQueues {
   // `slots`: also a slot per ray (the path state it continues), for integrators whose rays do
@@ -23,8 +25,8 @@ struct RayQueues {
 };
 
 // Closest hits of the first `count` rays (`coherent`: camera rays) and occlusion of the first
-// `count` segments, through the queue's host mapping; `kind` names the rays in the stats.
-void intersect(EmbreeScene& embree, const Buffer<GdrRayHit>& rays, size_t count, bool coherent, const char* kind);
-void occlude(EmbreeScene& embree, const Buffer<GdrRay>& rays, size_t count, const char* kind);
+// `count` segments, on the queue's host mapping or host copy; `kind` names the rays in the stats.
+void intersect(EmbreeScene& embree, Buffer<GdrRayHit>& rays, size_t count, bool coherent, const char* kind);
+void occlude(EmbreeScene& embree, Buffer<GdrRay>& rays, size_t count, const char* kind);
 
 }  // namespace gdr
