@@ -11,8 +11,8 @@
 
 namespace gdr {
 
-Context::Context(const DeviceInfo& device, Stats* stats)
-    : device_(device), stats_(stats), zero_copy_(device.type == "cpu" || device.host_unified) {
+Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stats_(stats) {
+  zero_copy_ = is_cpu() || device_.host_unified;
   configure_runtime(0);
   cl_int err = CL_SUCCESS;
   cl_context_properties props[] = {CL_CONTEXT_PLATFORM,

@@ -214,7 +214,9 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
           Surface sy2 = surface_at(&s, h.hit.primID, h.hit.u, h.hit.v);
           float3 d = sy2.p - so[k].p, phi2;
           float photon_ratio;
-          if (dot(d, d) <= r2 && photon_shift_eval(&s, &pa, sy.p, sy.ng, phi, &sy2, &phi2, &photon_ratio)) {
+          float2 parent_pdfs;
+          if (dot(d, d) <= r2 &&
+              photon_shift_eval(&s, &pa, sy.p, sy.ng, phi, &sy2, &phi2, &photon_ratio, &parent_pdfs)) {
             float3 wi2 = photon_toward_parent(&pa, sy2.p);
             co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
                  photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
@@ -223,7 +225,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
 #if defined(GDR_GVCM)
             if (formed) {
               float y2_dvcm, y2_dvm;
-              photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, &s, &mo, &y2_dvcm, &y2_dvm);
+              photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, parent_pdfs, &mo, &y2_dvcm, &y2_dvm);
               oy = MERGE_OTHERS(&bo[k], &fo[k], wo_o[k], wi2, y2_dvcm, y2_dvm, &rec.offset[k], rec.all_dvcm[1 + k],
                                 rec.all_dvm[1 + k], &mo);
             }

@@ -140,11 +140,12 @@ inline void photon_no_ray(__global GdrRayHit* r, uint id) {
 }
 
 // The offset photon at surface sy2 (found from parent pa) for base photon y (throughput phi, at
-// py with geometric normal ny): its throughput (*phi2) and the density ratio of its last segment
-// (*ratio, p(y') / p(y)). 0 where y' could not be a photon (a delta surface, or the side its
-// shading frame disagrees with) or the parent sends nothing toward it.
+// py with geometric normal ny): its throughput (*phi2), the density ratio of its last segment
+// (*ratio, p(y') / p(y)) and the parent's direction pdfs toward y and y' (*pdfs; 1 for a light at
+// infinity). 0 where y' could not be a photon (a delta surface, or the side its shading frame
+// disagrees with) or the parent sends nothing toward it.
 inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 py, float3 ny, float3 phi,
-                             const Surface* sy2, float3* phi2, float* ratio) {
+                             const Surface* sy2, float3* phi2, float* ratio, float2* pdfs) {
   Bsdf by2 = surface_bsdf(s, sy2);
   float3 w2 = -photon_toward_parent(pa, sy2->p);
   Frame f2 = frame_from_normal(sy2->ns);
@@ -152,11 +153,13 @@ inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 
   if (pa->kind == GPM_PARENT_INFINITE) {
     *phi2 = phi;
     *ratio = 1.0f;
+    *pdfs = (float2)(1.0f);
     return 1;
   }
   float3 w = normalize(py - pa->p);
   float pdf, pdf2;
   float3 e = photon_parent_eval(s, pa, w, &pdf), e2 = photon_parent_eval(s, pa, w2, &pdf2);
+  *pdfs = (float2)(pdf, pdf2);
   float g = photon_geometry(pa->p, py, ny), g2 = photon_geometry(pa->p, sy2->p, sy2->ng);
   float3 scale = (float3)(e.x > 0.0f ? e2.x / e.x : 0.0f, e.y > 0.0f ? e2.y / e.y : 0.0f,
                           e.z > 0.0f ? e2.z / e.z : 0.0f);
@@ -166,23 +169,22 @@ inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 
 }
 
 // The light subpath's MIS sums (bidir/subpath_mis.h) at the offset photon sy2, for G-VCM's weights:
-// those base photon y (at py, geometric normal ny) arrived with, its last segment re-aimed. From
-// a rough parent they are the parent's sums scattered toward sy2 and arrived there; from a light
-// point, y's sums with the emission's direction pdf, the light's cosine and the segment changed
-// (the position pdf is the same point's); from a light at infinity (same direction, no length),
-// with the arrival's cosine changed.
+// those base photon y (at py, geometric normal ny) arrived with, its last segment re-aimed; pdfs:
+// the parent's direction pdfs toward y and sy2 (photon_shift_eval's). From a rough parent they
+// are the parent's sums scattered toward sy2 and arrived there; from a light point, y's sums with
+// the emission's direction pdf, the light's cosine and the segment changed (the position pdf is
+// the same point's); from a light at infinity (same direction, no length), with the arrival's
+// cosine changed.
 inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, float3 py, float3 ny,
-                              const Surface* sy2, const SceneData* s, const GdrBidirOptions* o, float* dvcm,
-                              float* dvm) {
+                              const Surface* sy2, float2 pdfs, const GdrBidirOptions* o, float* dvcm, float* dvm) {
   float3 w2 = -photon_toward_parent(pa, sy2->p);
   float cos2 = fabs(dot(sy2->ng, w2));
   *dvcm = *dvm = 0.0f;
   if (pa->kind == GPM_PARENT_SURFACE) {
+    if (!(pdfs.y > 0.0f)) return;
     float3 wo_l = frame_to_local(&pa->frame, pa->wo), w2_l = frame_to_local(&pa->frame, w2);
-    float pdf = bsdf_pdf(&pa->b, wo_l, w2_l), pdf_rev = bsdf_pdf(&pa->b, w2_l, wo_l);
-    if (!(pdf > 0.0f)) return;
     float c = pa->dvcm, v = pa->dvc, m = pa->dvm;
-    mis_sums_scatter(0, pdf, pdf_rev, fabs(dot(pa->ng, w2)), o, &c, &v, &m);
+    mis_sums_scatter(0, pdfs.y, bsdf_pdf(&pa->b, w2_l, wo_l), fabs(dot(pa->ng, w2)), o, &c, &v, &m);
     mis_sums_arrive(length(sy2->p - pa->p), cos2, 1, o->mis, &c, &v, &m);
     *dvcm = c;
     *dvm = m;
@@ -193,10 +195,8 @@ inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, f
   if (!(cos2 > 0.0f)) return;
   float arrive = cos1 / cos2, emit = 1.0f, length2 = 1.0f;
   if (pa->kind == GPM_PARENT_LIGHT) {
-    float pdf = light_emission_pdf_dir(s, pa->light, pa->ng, w);
-    float pdf2 = light_emission_pdf_dir(s, pa->light, pa->ng, w2);
-    if (!(pdf2 > 0.0f)) return;
-    emit = pdf / pdf2;
+    if (!(pdfs.y > 0.0f)) return;
+    emit = pdfs.x / pdfs.y;
     float3 d = py - pa->p, d2 = sy2->p - pa->p;
     length2 = dot(d2, d2) / dot(d, d);
     // The light's cosine: an area light's at its point (1 for the others, whose dvm is 0 anyway).

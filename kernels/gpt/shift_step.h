@@ -62,6 +62,9 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
   }
 #endif
 
+#if defined(GDR_GBDPT)
+  GdrBidirOptions mo = gbdpt_options(&params);  // the options the offsets' sums take
+#endif
   // The offsets' rays (own or reconnection), queued with one atomic each kind for the group.
   float3 ray_p[GPT_OFFSETS], ray_ng[GPT_OFFSETS], ray_w[GPT_OFFSETS];
   int kind[GPT_OFFSETS], own = 0, reconnects = 0;  // kind: 0 none, 1 own ray, 2 reconnection
@@ -82,7 +85,6 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     }
     offset_keep(&o, &pre);
 #if defined(GDR_GBDPT)
-    GdrBidirOptions mo = gbdpt_options(&params);
     gbdpt_sums_scatter(o.last_delta, o.last_pdf, bsdf_pdf(&y.b, frame_to_local(&y.frame, wiy_w), y.wo),
                        fabs(dot(y.su.ng, wiy_w)), &mo, &o.mis);
 #endif

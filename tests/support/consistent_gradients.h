@@ -3,6 +3,8 @@
 // long path-traced reference (4096 spp, seed 500) of a small film, paths of up to kMaxDepth
 // segments. The gradients' error counts the neighbour pairs neither of which sees the light.
 #pragma once
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -130,6 +132,22 @@ inline ConsistencyErrors consistency_errors(GradientPathTracer& integrator, int 
   e.primal = relmse(g.primal, b.reference_);
   e.reconstruction = relmse(integrator.render(s).image.rgb_layer(""), b.reference_);
   return e;
+}
+
+// The errors fall as the passes grow: at 4, 16 and 64 passes the mean of two runs' (seeds 1, 2)
+// gradient, primal and reconstruction errors each under half of those at the passes before.
+inline void expect_errors_fall_with_passes(GradientPathTracer& integrator, ConsistencyScene& b) {
+  ConsistencyErrors previous{INFINITY, INFINITY, INFINITY};
+  for (int spp : {4, 16, 64}) {
+    const ConsistencyErrors e1 = consistency_errors(integrator, spp, 1, b);
+    const ConsistencyErrors e2 = consistency_errors(integrator, spp, 2, b);
+    const ConsistencyErrors e{0.5 * (e1.gradients + e2.gradients), 0.5 * (e1.primal + e2.primal),
+                              0.5 * (e1.reconstruction + e2.reconstruction)};
+    EXPECT_LT(e.gradients, 0.5 * previous.gradients) << spp << " passes";
+    EXPECT_LT(e.primal, 0.5 * previous.primal) << spp << " passes";
+    EXPECT_LT(e.reconstruction, 0.5 * previous.reconstruction) << spp << " passes";
+    previous = e;
+  }
 }
 
 // The mean of `runs` runs' gradients (seeds 1..runs) at `spp` passes, against the reference's

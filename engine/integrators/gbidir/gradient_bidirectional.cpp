@@ -3,6 +3,12 @@
 namespace gdr {
 namespace {
 
+// gpt's settings for `name`, whose offsets carry bidirectional MIS sums: no manifold walk.
+GptSettings settings_with_sums(const IntegratorParams& params, const std::string& name) {
+  return gpt_settings_without_manifold(
+      params, name + " shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
+}
+
 // The light subpaths' options: bdpt's store and connections to the camera, the balance heuristic
 // (the options the kernels weigh the camera subpaths by: gbidir/weights.h, gbdpt_options).
 GdrBidirOptions light_options() {
@@ -15,15 +21,8 @@ GdrBidirOptions light_options() {
 const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux"};
 const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "radius", "radius_alpha"};
 
-GptSettings gbdpt_settings(const IntegratorParams& params) {
-  return gpt_settings_without_manifold(
-      params, "gbdpt shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
-}
-
-GptSettings gvcm_settings(const IntegratorParams& params) {
-  return gpt_settings_without_manifold(
-      params, "gvcm shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
-}
+GptSettings gbdpt_settings(const IntegratorParams& params) { return settings_with_sums(params, "gbdpt"); }
+GptSettings gvcm_settings(const IntegratorParams& params) { return settings_with_sums(params, "gvcm"); }
 
 BidirSettings gvcm_photon_settings(const IntegratorParams& params) {
   BidirSettings s = vcm_settings(params);
