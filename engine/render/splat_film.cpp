@@ -15,13 +15,17 @@ SplatFilm::SplatFilm(Context& ctx, const KernelFactory& kernels, const std::stri
   slots_.fill(GdrSplat{});
 }
 
-void SplatFilm::gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film) {
-  if (count == 0 || height <= 0) return;
+void SplatFilm::sort(const Buffer<GdrCamera>& camera, int height, cl_uint count) {
   if (starts_.size() < size_t(height) + 1) starts_ = Buffer<cl_uint>(ctx_, size_t(height) + 1);
   keys_.args(camera, count, slots_, keys_buffer_).run(count);
   primitives_.sort_by_key(keys_buffer_, count, cl_uint(height), starts_, sorted_);
+}
+
+void SplatFilm::gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film) {
+  if (count == 0 || height <= 0) return;
+  sort(camera, height, count);
   gather_.args(camera, starts_, sorted_, slots_, film).run(size_t(height));
-  slots_.fill(GdrSplat{});
+  clear();
 }
 
 }  // namespace gdr

@@ -26,6 +26,13 @@ class SplatFilm {
   // empties them.
   void gather(const Buffer<GdrCamera>& camera, int height, cl_uint count, Buffer<Vec4>& film);
 
+  // For a gather of one's own (kernels/path/splat.h's order): slots [0, count) listed by film row,
+  // row r's in sorted()[starts()[r], starts()[r + 1]); clear() empties the slots after it.
+  void sort(const Buffer<GdrCamera>& camera, int height, cl_uint count);
+  const Buffer<cl_uint>& starts() const { return starts_; }
+  const Buffer<cl_uint>& sorted() const { return sorted_; }
+  void clear() { slots_.fill(GdrSplat{}); }
+
  private:
   Context& ctx_;
   Kernel keys_, gather_;

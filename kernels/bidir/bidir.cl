@@ -158,12 +158,13 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
 }
 
 // A light subpath's new vertex: under bdpt it joins the light-vertex store (vertex j of subpath
-// `slot` at store[j * stride + slot]); its connection to the camera (a splat in the path's slot
-// and a shadow ray toward the camera); its continuation by importance transport.
+// `slot` at store[j * stride + slot]); its connection to the camera (a splat in the path's slot,
+// the vertex it came from in seen[slot] for the gradient integrators' shifts, and a shadow ray
+// toward the camera); its continuation by importance transport.
 __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint count, uint stride,
                                 __global const GdrCamera* camera, __global const GdrRayHit* rays_in,
                                 __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
-                                __global GdrRay* shadow_rays, __global GdrSplat* splats,
+                                __global GdrRay* shadow_rays, __global GdrSplat* splats, __global GdrBidirVertex* seen,
                                 __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
                                 __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
@@ -216,6 +217,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     float3 c = beta * f * (w * pr.cos_theta * camera_we(&cam, pr.cos_theta) / (pr.dist * pr.dist));
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
       splat_write(&splats[slot], pr.raster, c);
+      seen[slot] = bidir_vertex(&rh.hit, wo, beta, &st, k);
       uint r = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
       atomic_inc(&counters[BIDIR_COUNTER_CAMERA_CONNECTIONS]);
       write_segment_ray(&shadow_rays[r], su.p, su.ng, camera_position(&cam), slot);

@@ -4,7 +4,8 @@
 // bidirectional kernels (bidir/bidir.cl, traced first). Built with GDR_GBDPT, G-PT's steps weigh
 // every strategy by G-BDPT's MIS (gbidir/weights.h), carry the bidirectional sums and record each
 // rough camera vertex; per bounce the host then runs gbdpt_connect once per stored light vertex.
-// Light tracing (t = 1) is not shifted: its splats join the layer kept out of the gradients.
+// Light tracing (t = 1) is shifted from its splat pixel after each light bounce
+// (gbidir/light_tracing.h).
 #include "gbidir/connect.h"
 #include "gbidir/light_tracing.h"
 #include "gpt/generate.h"

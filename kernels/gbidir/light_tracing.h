@@ -1,13 +1,218 @@
-// G-BDPT's light tracing (t = 1): the light subpaths' connections to the camera (bidir/bidir.cl,
-// under bdpt's weight over every strategy) are splatted into a film of their own during a pass,
-// then join each pixel's sums in the layer kept out of the gradients, beside the emission the
-// camera sees directly: light tracing is not shifted (gbidir/weights.h).
+// G-BDPT's light tracing (t = 1) with gradients (Manzi et al. 2015: light-tracing paths shifted
+// from their splat pixel). A light subpath's vertex x1 seen by the camera at film position r
+// (bidir/bidir.cl splats it, under bdpt's or vcm's weight w_lt over every strategy) is path x; its
+// offset y for neighbour k is the light path with x1 replaced by y1, the first hit of the camera
+// ray through r + d_k, reconnected to x1's parent p (the vertex before it: a rough light vertex,
+// the light point, or a light at infinity; a delta parent fails: no manifold walk here). The
+// light prefix up to p is the base's, so (photon_shift.h's re-aimed segment)
+//   f(y)/p(x) = beta(x1) F(p -> y1)/F(p -> x1) G(p, y1)/G(p, x1),
+// and the film shift has unit Jacobian on the film, so in surface area
+//   |J| = dA(y1)/dA(x1) = pc(x1) / pc(y1),   pc: the camera's area density at the vertex,
+// the offset's splat value being f(y)|J|/p(x) times y's own light-tracing weight w_lt(y) (its
+// light-side sums re-aimed as G-VCM's offset photons' are). Light tracing's share of every path
+// is one layer of the image on its own (the shifted strategies share the rest: weights.h), in
+// which base and offset split by the pair weight 1 / (1 + R), R = p(y)|J| / p(x) (the re-aimed
+// segment's density ratio times |J|), both directions of the pair (y, shifted by -d_k, gives x
+// back: x1 is the first hit of its camera ray). An offset whose segment to the parent is blocked,
+// or that could not exist (outside the film, escaped, delta, nothing sent toward it), leaves the
+// base weight 1, as does a pixel whose neighbour is outside the image.
+//
+// Per light bounce, after the camera connections' shadow rays:
+//   gbdpt_lt_offset_rays     the offsets' camera rays (pairs zeroed);
+//   gbdpt_lt_offset_eval     after Embree: each offset's value and R into pairs[4 i + k], and the
+//                            shadow ray from y1 to the parent;
+//   gbdpt_lt_offset_blocked  zeroes the pairs whose ray was blocked;
+//   gbdpt_lt_gather          base and offsets into the pass's layers (the accumulators' BASE and
+//                            OFFSET slots, whole image), rows owned as the splat film's gather;
+// and at the end of the pass gbdpt_add_light_tracing adds the layers into the accumulators.
 #pragma once
+#include "bidir/subpath_mis.h"
+#include "camera/importance.h"
+#include "gbidir/photon_shift.h"
+#include "gradient/neighbours.h"
+#include "path/camera_sample.h"
+#include "path/scene.h"
+#include "path/shadow.h"
+#include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
+#include "shared/splat_types.h"
 
-__kernel void gbdpt_add_light_tracing(uint pixels, __global float4* film, __global float4* acc) {
+__kernel void gbdpt_lt_offset_rays(uint count, __global const GdrCamera* camera, __global const GdrSplat* splats,
+                                   __global float4* pairs, __global GdrRayHit* rays, __global uint* counters) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  for (int k = 0; k < GPT_OFFSETS; ++k) pairs[i * GPT_OFFSETS + k] = (float4)(0.0f);
+  if (!splats[i].valid) return;
+  GdrCamera cam = *camera;
+  float2 r = (float2)(splats[i].raster[0], splats[i].raster[1]);
+  CameraRay rs[GPT_OFFSETS];
+  int traced[GPT_OFFSETS], n = 0;
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    float2 r2 = r + (float2)(OFFSET_PIXEL_DX(k), OFFSET_PIXEL_DY(k));
+    traced[k] = camera_raster_inside(&cam, r2);
+    if (traced[k]) camera_ray(&cam, r2.x, r2.y, &rs[k].o, &rs[k].d, &rs[k].tnear, &rs[k].tfar);
+    n += traced[k];
+  }
+  if (n < GPT_OFFSETS) atomic_add(&counters[GPT_COUNTER_FAIL_OUTSIDE], (uint)(GPT_OFFSETS - n));
+  if (n == 0) return;
+  uint slot = atomic_add(&counters[GPT_COUNTER_LT_OFFSET_RAYS], (uint)n);
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (traced[k]) write_camera_ray(&rays[slot++], &rs[k], i * GPT_OFFSETS + (uint)k);
+  }
+}
+
+// The camera's area density at surface point p (geometric normal ng) it projects to as pr.
+inline float lt_camera_density(const GdrCamera* cam, const CameraProjection* pr, float3 ng) {
+  return camera_pdf_dir(cam, pr->cos_theta) * fabs(dot(ng, pr->dir)) / (pr->dist * pr->dist);
+}
+
+// The value (f(y)|J|/p(x) w_lt(y)) and R of offset y1 (surface sy) of light vertex x (surface sx)
+// whose parent is pa; 0 where it cannot be formed. *yv: y1 as the light subpath's vertex (its
+// throughput f/p of the light path up to it, its direction toward the parent and its MIS sums;
+// prim, u and v are the caller's).
+inline int lt_offset(const SceneData* s, const GdrCamera* cam, const GdrBidirOptions* o, const PhotonParent* pa,
+                     const GdrBidirVertex* x, const Surface* sx, const Surface* sy, GdrBidirVertex* yv,
+                     float3* value, float* r) {
+  CameraProjection px, py;
+  if (!camera_project(cam, sx->p, &px) || !camera_project(cam, sy->p, &py)) return 0;
+  float3 phi2;
+  float ratio;
+  float2 pdfs;
+  if (!photon_shift_eval(s, pa, sx->p, sx->ng, vload3(0, x->throughput), sy, &phi2, &ratio, &pdfs)) return 0;
+  float3 wo = photon_toward_parent(pa, sy->p), wc = -py.dir;
+  if (pa->kind == GPM_PARENT_INFINITE) {
+    // Parallel light: the hit's area density and f both carry the arrival cosine (photon_shift_eval
+    // leaves them to the photon's own translation).
+    float c = fabs(dot(sx->ng, wo)), c2 = fabs(dot(sy->ng, wo));
+    float scale = c > 0.0f ? c2 / c : 0.0f;
+    phi2 *= scale;
+    ratio *= scale;
+  }
+  float pc_x = lt_camera_density(cam, &px, sx->ng), pc_y = lt_camera_density(cam, &py, sy->ng);
+  float jac = pc_y > 0.0f ? pc_x / pc_y : 0.0f;
+  Bsdf by = surface_bsdf(s, sy);
+  Frame fy = frame_from_normal(sy->ns);
+  float3 wo_l = frame_to_local(&fy, wo), wc_l = frame_to_local(&fy, wc);
+  float3 f = bsdf_eval_transport(&by, wo_l, wc_l, TRANSPORT_IMPORTANCE) *
+             shading_normal_correction(wo, wc, sy->ng, wo_l.z, wc_l.z);
+  *yv = *x;
+  photon_shift_sums(pa, x, sx->p, sx->ng, sy, pdfs, o, &yv->dvcm, &yv->dvc, &yv->dvm);
+  vstore3(wo, 0, yv->wo);
+  vstore3(ratio > 0.0f ? phi2 / ratio : (float3)(0.0f), 0, yv->throughput);
+  float w = bidir_weight(o, mis_weight(mis_side(pc_y, yv->dvcm, yv->dvc, bsdf_pdf(&by, wc_l, wo_l), o)));
+  *value = phi2 * f * (w * jac * py.cos_theta * camera_we(cam, py.cos_theta) / (py.dist * py.dist));
+  *r = ratio * jac;
+  return max3(*value) > 0.0f && is_finite3(*value) && *r > 0.0f && isfinite(*r);
+}
+
+__kernel void gbdpt_lt_offset_eval(GdrGptParams params, GdrBidirOptions opts, uint count, uint stride,
+                                   __global const GdrCamera* camera, __global const GdrRayHit* rays,
+                                   __global const GdrBidirVertex* seen, __global const GdrBidirPathState* light_paths,
+                                   __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                   __global float4* pairs, __global GdrRay* shadow_rays, __global uint* counters,
+                                   SCENE_DATA_ARGS) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  GdrRayHit rh = rays[q];
+  uint id = rh.ray.id, i = id / GPT_OFFSETS;
+  write_ray(&shadow_rays[q], (float3)(0.0f), (float3)(0.0f, 0.0f, 1.0f), 1.0f, 0.0f, id);  // skipped unless formed
+  if (rh.hit.geomID == GDR_INVALID_ID) {
+    atomic_inc(&counters[GPT_COUNTER_FAIL_ENVIRONMENT]);
+    return;
+  }
+  SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  GdrBidirVertex x = seen[i];
+  // x's entry in the light-vertex store, or the one after the last where it was not stored.
+  int j = light_paths[i].stored;
+  if (j > 0 && store[(uint)(j - 1) * stride + i].depth == x.depth) j -= 1;
+  PhotonParent pa = photon_parent(&s, store, origins, stride, (uint)j * stride + i, &x);
+  if (pa.kind == GPM_PARENT_NONE) {
+    atomic_inc(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT]);
+    return;
+  }
+  GdrCamera cam = *camera;
+  Surface sx = surface_at(&s, x.prim, x.u, x.v), sy = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  GdrBidirVertex y;
+  float3 v;
+  float r;
+  if (!lt_offset(&s, &cam, &opts, &pa, &x, &sx, &sy, &y, &v, &r)) {
+    atomic_inc(&counters[GPT_COUNTER_FAIL_ZERO]);
+    return;
+  }
+  pairs[id] = (float4)(v, r);
+  if (pa.kind == GPM_PARENT_INFINITE) {
+    write_light_ray(&shadow_rays[q], sy.p, sy.ng, pa.wo, INFINITY, id);
+  } else {
+    write_segment_ray(&shadow_rays[q], sy.p, sy.ng, pa.p, id);
+  }
+}
+
+__kernel void gbdpt_lt_offset_blocked(uint count, __global const GdrRay* shadow_rays, __global float4* pairs,
+                                      __global uint* counters) {
+  uint q = get_global_id(0);
+  if (q >= count) return;
+  GdrRay r = shadow_rays[q];
+  if (!(pairs[r.id].w > 0.0f)) return;  // not formed: Embree skipped its ray
+  if (shadow_unoccluded(r.tfar)) {
+    atomic_inc(&counters[GPT_COUNTER_LT_OFFSETS]);
+  } else {
+    pairs[r.id] = (float4)(0.0f);
+    atomic_inc(&counters[GPT_COUNTER_FAIL_OCCLUDED]);
+  }
+}
+
+// Work item y adds to film row y of `layers` the splats of the rows whose footprints reach it (the
+// splat film's order: path/splat.h): for pixel P there, BASE(k) gets the base's value times P's
+// filter at r and the pair weight (1 where P's neighbour P + d_k is outside the image), OFFSET(k)
+// the offset's value times the neighbour's filter at r + d_k and the pair weight (the offset lands
+// in the neighbour, as G-PT's offsets: gradient/gather.h).
+__kernel void gbdpt_lt_gather(__global const GdrCamera* camera, __global const uint* starts,
+                              __global const uint* sorted, __global const GdrSplat* splats,
+                              __global const float4* pairs, __global float4* layers) {
+  int y = (int)get_global_id(0);
+  GdrCamera cam = *camera;
+  if (y >= cam.height) return;
+  int w = cam.width, h = cam.height;
+  float full = camera_filter_full_mass(&cam);
+  int reach = (int)ceil(cam.filter_radius) + 1;
+  for (int row = max(y - reach, 0); row <= min(y + reach, h - 1); ++row) {
+    for (uint n = starts[row], end = starts[row + 1]; n < end; ++n) {
+      uint i = sorted[n];
+      float2 raster = (float2)(splats[i].raster[0], splats[i].raster[1]);
+      int2 lo, hi;
+      camera_pixel_footprint(&cam, raster, &lo, &hi);
+      if (y < lo.y || y > hi.y) continue;
+      float wy = camera_axis_weight_full(&cam, y, h, raster.y, full);
+      float3 c = vload3(0, splats[i].value);
+      float4 pr[GPT_OFFSETS];
+      for (int k = 0; k < GPT_OFFSETS; ++k) pr[k] = pairs[i * GPT_OFFSETS + k];
+      for (int x = lo.x; x <= hi.x; ++x) {
+        float hb = wy * camera_axis_weight_full(&cam, x, w, raster.x, full);
+        __global float4* px = &layers[(uint)(y * w + x) * GBDPT_LT_LAYERS];
+        for (int k = 0; k < GPT_OFFSETS; ++k) {
+          int nx = x + OFFSET_PIXEL_DX(k), ny = y + OFFSET_PIXEL_DY(k);
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h) {
+            if (hb > 0.0f) px[GPT_ACC_BASE(k)] += (float4)(c * hb, 0.0f);
+            continue;
+          }
+          float pair = 1.0f / (1.0f + pr[k].w);
+          if (hb > 0.0f) px[GPT_ACC_BASE(k)] += (float4)(c * (hb * pair), 0.0f);
+          if (!(pr[k].w > 0.0f)) continue;
+          float2 r2 = raster + (float2)(OFFSET_PIXEL_DX(k), OFFSET_PIXEL_DY(k));
+          float ho = camera_axis_weight_full(&cam, nx, w, r2.x, full) * camera_axis_weight_full(&cam, ny, h, r2.y, full);
+          if (ho > 0.0f) px[GPT_ACC_OFFSET(k)] += (float4)(pr[k].xyz * (ho * pair), 0.0f);
+        }
+      }
+    }
+  }
+}
+
+// The pass's light-tracing layers into the accumulators (before the gather), emptied.
+__kernel void gbdpt_add_light_tracing(uint pixels, __global float4* layers, __global float4* acc) {
   uint p = get_global_id(0);
   if (p >= pixels) return;
-  acc[p * GPT_ACC_COUNT + GPT_ACC_DIRECT] += film[p];
-  film[p] = (float4)(0.0f);
+  for (int l = 0; l < GBDPT_LT_LAYERS; ++l) {
+    acc[p * GPT_ACC_COUNT + l] += layers[p * GBDPT_LT_LAYERS + l];
+    layers[p * GBDPT_LT_LAYERS + l] = (float4)(0.0f);
+  }
 }

@@ -224,8 +224,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
             ratio = rec.ratio[k] * photon_ratio;
 #if defined(GDR_GVCM)
             if (formed) {
-              float y2_dvcm, y2_dvm;
-              photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, parent_pdfs, &mo, &y2_dvcm, &y2_dvm);
+              float y2_dvcm, y2_dvc, y2_dvm;
+              photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, parent_pdfs, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
               oy = MERGE_OTHERS(&bo[k], &fo[k], wo_o[k], wi2, y2_dvcm, y2_dvm, &rec.offset[k], rec.all_dvcm[1 + k],
                                 rec.all_dvm[1 + k], &mo);
             }

@@ -176,10 +176,11 @@ inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 
 // the same point's); from a light at infinity (same direction, no length), with the arrival's
 // cosine changed.
 inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, float3 py, float3 ny,
-                              const Surface* sy2, float2 pdfs, const GdrBidirOptions* o, float* dvcm, float* dvm) {
+                              const Surface* sy2, float2 pdfs, const GdrBidirOptions* o, float* dvcm, float* dvc,
+                              float* dvm) {
   float3 w2 = -photon_toward_parent(pa, sy2->p);
   float cos2 = fabs(dot(sy2->ng, w2));
-  *dvcm = *dvm = 0.0f;
+  *dvcm = *dvc = *dvm = 0.0f;
   if (pa->kind == GPM_PARENT_SURFACE) {
     if (!(pdfs.y > 0.0f)) return;
     float3 wo_l = frame_to_local(&pa->frame, pa->wo), w2_l = frame_to_local(&pa->frame, w2);
@@ -187,6 +188,7 @@ inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, f
     mis_sums_scatter(0, pdfs.y, bsdf_pdf(&pa->b, w2_l, wo_l), fabs(dot(pa->ng, w2)), o, &c, &v, &m);
     mis_sums_arrive(length(sy2->p - pa->p), cos2, 1, o->mis, &c, &v, &m);
     *dvcm = c;
+    *dvc = v;
     *dvm = m;
     return;
   }
@@ -201,8 +203,13 @@ inline void photon_shift_sums(const PhotonParent* pa, const GdrBidirVertex* y, f
     length2 = dot(d2, d2) / dot(d, d);
     // The light's cosine: an area light's at its point (1 for the others, whose dvm is 0 anyway).
     float cl = fabs(dot(pa->ng, w)), cl2 = fabs(dot(pa->ng, w2));
-    if (cl > 0.0f && cl2 > 0.0f) *dvm = y->dvm * mis_power_of(emit * arrive * cl2 / cl, o->mis);
+    if (cl > 0.0f && cl2 > 0.0f) {
+      float scale = mis_power_of(emit * arrive * cl2 / cl, o->mis);
+      *dvc = y->dvc * scale;
+      *dvm = y->dvm * scale;
+    }
   } else {
+    *dvc = y->dvc * mis_power_of(arrive, o->mis);
     *dvm = y->dvm * mis_power_of(arrive, o->mis);
   }
   *dvcm = y->dvcm * mis_power_of(emit * arrive * length2, o->mis);

@@ -7,12 +7,13 @@
 // same for both). Both f(x) and f(y) |J| are weighted by it. A shift that fails leaves the base
 // its bidirectional weight 1 / A.
 //
-// Light tracing (t = 1) is not shifted: its connections to the camera splat into the layer kept
-// out of the gradients (with the direct emission) under bdpt's weight over every strategy,
-// w_lt(z) = p_lt(z) / sum_k p_k(z). The shifted strategies share the rest of each path: their sums
-// A and B leave light tracing out, and the weights of x and of y are scaled by 1 - w_lt of their
-// own path, (1 + others) / (1 + others with light tracing) (gbdpt_shifted_share). For every path
-// the weights of its base events, its offset events and its light tracing then sum to 1.
+// Light tracing (t = 1) is shifted on its own (gbidir/light_tracing.h): its share of every path,
+// bdpt's weight over every strategy w_lt(z) = p_lt(z) / sum_k p_k(z), is a layer of the image
+// whose base and offset split by their pair's weight. The shifted strategies here share the rest
+// of each path: their sums A and B leave light tracing out, and the weights of x and of y are
+// scaled by 1 - w_lt of their own path, (1 + others) / (1 + others with light tracing)
+// (gbdpt_shifted_share). For every path the weights of its base events, its offset events and its
+// light tracing then sum to 1.
 //
 // G-VCM (Sun et al. 2017) weighs the same way over VCM's strategies: the sums carry merging's
 // factors (the pass's, in GdrGptParams), and a merge's share of base and offset comes from the

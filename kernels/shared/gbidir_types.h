@@ -12,6 +12,10 @@
 #define GBDPT_OFFSET_SHARED 2  // at the base's vertex (joined): shares the base's connection segments
 #define GBDPT_OFFSET_GLOSSY 3  // at a vertex of its own, but the shift there is no reconnection: fails
 
+// The layers G-BDPT's light tracing adds a pixel during a pass (gbidir/light_tracing.h): the
+// accumulators' GPT_ACC_BASE(k) and GPT_ACC_OFFSET(k), the first eight.
+#define GBDPT_LT_LAYERS (2 * GPT_OFFSETS)
+
 // What a photon's parent is (the vertex its light subpath reached it from; gbidir/photon_shift.h).
 #define GPM_PARENT_NONE 0      // a delta vertex: no reconnection
 #define GPM_PARENT_SURFACE 1   // a rough vertex of the light subpath, stored just before the photon

@@ -80,6 +80,8 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_FAIL_GLOSSY_CONNECTION, "shift_failures/glossy_connection") /* no reconnection there */ \
   X(GPT_COUNTER_MERGES, "gpm/merges")                       /* G-PM: photons merged at base visible points */ \
   X(GPT_COUNTER_FAIL_PHOTON_PARENT, "shift_failures/photon_parent") /* a delta vertex before the photon */ \
+  X(GPT_COUNTER_LT_OFFSET_RAYS, "")                         /* G-BDPT: light tracing's offset camera rays */ \
+  X(GPT_COUNTER_LT_OFFSETS, "gbdpt/light_tracing_offsets")  /* light tracing's offsets formed and visible */ \
   X(GPT_COUNTER_FAIL_PHOTON_LOST, "shift_failures/photon_lost") /* offset photon outside the radius, or no photon */
 enum { GPT_COUNTERS(GDR_COUNTER_ENUM) GPT_COUNTER_COUNT };
 

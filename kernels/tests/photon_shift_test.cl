@@ -26,11 +26,13 @@ __kernel void photon_geometry_eval(uint count, __global const float4* in, __glob
 
 // G-VCM's light-side sums of a photon shifted onto itself (photon_shift_sums with the offset photon
 // at the base photon's own point): for each store entry e of a traced batch (vertex j of subpath
-// slot at j * stride + slot, below `stored` of its subpath), out[e] = (the photon's dvcm, the
-// recomputed dvcm, its dvm, the recomputed dvm; photon_shift_eval gives the parent's pdfs), and
+// slot at j * stride + slot, below `stored` of its subpath), out[2 e] = (the photon's dvcm, the
+// recomputed dvcm, its dvm, the recomputed dvm), out[2 e + 1] = (its dvc, the recomputed dvc, 0,
+// 0) (photon_shift_eval gives the parent's pdfs), and
 // kind[e] its parent's kind (GPM_PARENT_*; -1 for no stored vertex, GPM_PARENT_NONE also where
 // the shift is refused).
 __kernel void photon_shift_sums_unshifted(GdrPtParams params, GdrBidirOptions opts, uint entries, uint stride,
+                                          __global const GdrCamera* camera,
                                           __global const GdrBidirPathState* light_paths,
                                           __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
                                           __global float4* out, __global int* kind, SCENE_DATA_ARGS) {
@@ -43,12 +45,13 @@ __kernel void photon_shift_sums_unshifted(GdrPtParams params, GdrBidirOptions op
   GdrBidirVertex y = store[e];
   PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
   Surface sy = surface_at(&s, y.prim, y.u, y.v);
-  float dvcm = 0.0f, dvm = 0.0f, ratio;
+  float dvcm = 0.0f, dvc = 0.0f, dvm = 0.0f, ratio;
   float3 phi2;
   float2 pdfs;
   int shifted = pa.kind != GPM_PARENT_NONE &&
                 photon_shift_eval(&s, &pa, sy.p, sy.ng, vload3(0, y.throughput), &sy, &phi2, &ratio, &pdfs);
   kind[e] = shifted ? pa.kind : GPM_PARENT_NONE;
-  if (shifted) photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy, pdfs, &opts, &dvcm, &dvm);
-  out[e] = (float4)(y.dvcm, dvcm, y.dvm, dvm);
+  if (shifted) photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy, pdfs, &opts, &dvcm, &dvc, &dvm);
+  out[2 * e] = (float4)(y.dvcm, dvcm, y.dvm, dvm);
+  out[2 * e + 1] = (float4)(y.dvc, dvc, 0.0f, 0.0f);
 }

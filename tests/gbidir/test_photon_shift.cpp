@@ -122,52 +122,107 @@ TEST(PhotonShift, GeometryTermIsTheSolidAngleOfArea) {
   for (unsigned i = 0; i < n; ++i) EXPECT_NEAR(out[i] / expected[i], 1.0, 1e-3) << "case " << i;
 }
 
-// The sums G-VCM's merge weights take for an offset photon (photon_shift_sums: from the parent's
-// sums, or from the photon's own with its last segment's pdfs and cosines changed), for the zero
-// shift, against those the light subpath carried to the photon: every parent kind (`kinds`
-// GPM_PARENT_* must all occur) within float rounding.
-void expect_sums_unshifted(const Scene& scene, const std::string& what, std::vector<int> kinds) {
-  test::SceneOnDevice on_device(scene);
-  RenderInputs in = on_device.inputs();
-  const cl_uint count = cl_uint(scene.camera.width) * scene.camera.height;
-  BidirSubpaths subpaths(in, BIDIR_VCM, count);
-  RenderSettings rs;
-  rs.spp = 1;
-  rs.seed = 3;
-  rs.max_depth = 8;
-  const GdrPtParams p = in.device_scene.path_params(rs, 0, 0, count);
-  const GdrBidirOptions o = merging_pass_options(gvcm_photon_settings({}), scene, 0, count);
-  Buffer<Vec4> values(in.context, count);
-  SplatFilm splats(in.context, subpaths.kernels(), BidirSubpaths::kProgram, count);
-  subpaths.trace_light(p, o, BidirSink{values, splats});
-  const PhotonGrid grid = subpaths.grid();
-  const cl_uint entries = grid.stride * cl_uint(std::max(subpaths.stored_bound(), 1));
-  Buffer<cl_float4> out(in.context, entries);
-  Buffer<cl_int> kind(in.context, entries);
-  subpaths.kernels()
-      .make("tests/photon_shift_test.cl", "photon_shift_sums_unshifted")
-      .args(p, o, entries, grid.stride, subpaths.light_paths(), grid.store, grid.origins, out, kind, in.device_scene)
-      .run(entries);
-  const std::vector<cl_float4> sums = out.read();
-  const std::vector<cl_int> kinds_of = kind.read();
-  // Relative differences by parent kind: the recomputation from a rough parent goes through its
-  // BSDF's pdfs and the segment's length and cosines again (float rounding, largest on short
-  // segments and grazing arrivals); from a light the zero shift scales the photon's own sums by 1.
-  std::vector<std::vector<double>> rel(4);
-  for (cl_uint e = 0; e < entries; ++e) {
-    if (kinds_of[e] <= 0) continue;  // no stored vertex, or a delta parent
-    const cl_float4& v = sums[e];
-    rel[kinds_of[e]].push_back(std::fabs(v.s[1] - v.s[0]) / std::fabs(v.s[0]));
-    if (v.s[2] != 0.0f) rel[kinds_of[e]].push_back(std::fabs(v.s[3] - v.s[2]) / std::fabs(v.s[2]));
+// One batch of light subpaths (gvcm's: vcm's, balance heuristic; or gbdpt's: bdpt's) traced by
+// the bidirectional kernels over `scene`'s film, seed 3, paths up to 8 segments: a test kernel of
+// `file` then runs over every store entry with (params, options, entries, stride, camera, light
+// paths, store, origins, out, kind, scene), out holding `per_entry` float4s an entry.
+struct LightBatch {
+  LightBatch(const Scene& scene, int technique)
+      : on_device(scene),
+        in(on_device.inputs()),
+        count(cl_uint(scene.camera.width) * scene.camera.height),
+        subpaths(in, technique, count) {
+    RenderSettings rs;
+    rs.spp = 1;
+    rs.seed = 3;
+    rs.max_depth = 8;
+    p = in.device_scene.path_params(rs, 0, 0, count);
+    o = technique == BIDIR_VCM ? merging_pass_options(gvcm_photon_settings({}), scene, 0, count)
+                               : GdrBidirOptions{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
+    Buffer<Vec4> values(in.context, count);
+    SplatFilm splats(in.context, subpaths.kernels(), BidirSubpaths::kProgram, count);
+    subpaths.trace_light(p, o, BidirSink{values, splats});
+    entries = cl_uint(subpaths.capacity()) * cl_uint(std::max(subpaths.stored_bound(), 1));
   }
+  void run(const char* file, const char* kernel, int per_entry) {
+    Buffer<cl_float4> b_out(in.context, size_t(per_entry) * entries);
+    Buffer<cl_int> b_kind(in.context, entries);
+    subpaths.kernels()
+        .make(file, kernel)
+        .args(p, o, entries, cl_uint(subpaths.capacity()), in.device_scene.camera(), subpaths.light_paths(),
+              subpaths.store(), subpaths.origins(), b_out, b_kind, in.device_scene)
+        .run(entries);
+    out = b_out.read();
+    kind = b_kind.read();
+  }
+
+  test::SceneOnDevice on_device;
+  RenderInputs in;
+  cl_uint count, entries = 0;
+  BidirSubpaths subpaths;
+  GdrPtParams p{};
+  GdrBidirOptions o{};
+  std::vector<cl_float4> out;
+  std::vector<cl_int> kind;
+};
+
+// Checks the relative differences gathered by parent kind: each kind of `kinds` (GPM_PARENT_*) occurs
+// in more than 20 cases, and their median and 99th percentile are under the bounds.
+void expect_small_by_kind(std::vector<std::vector<double>> rel, const std::vector<int>& kinds,
+                          const std::string& what, double median, double p99) {
   for (int k : kinds) {
     std::vector<double>& r = rel[k];
     ASSERT_GT(r.size(), 20u) << what << ": parent kind " << k;
     std::sort(r.begin(), r.end());
-    // Measured (Cornell box, rough parents): median 2.9e-5 (dvcm), p99 1.3e-3, max 0.32 (a grazing
-    // arrival); light parents 0.
-    EXPECT_LT(r[r.size() / 2], 1e-4) << what << ": parent kind " << k;
-    EXPECT_LT(r[r.size() * 99 / 100], 5e-3) << what << ": parent kind " << k;
+    EXPECT_LT(r[r.size() / 2], median) << what << ": parent kind " << k;
+    EXPECT_LT(r[r.size() * 99 / 100], p99) << what << ": parent kind " << k;
+  }
+}
+
+// The sums G-VCM's merge weights (and G-BDPT's light-tracing offsets) take for an offset photon
+// (photon_shift_sums: from the parent's sums, or from the photon's own with its last segment's
+// pdfs and cosines changed), for the zero shift, against those the light subpath carried to the
+// photon: every parent kind (`kinds` GPM_PARENT_* must all occur) within float rounding.
+void expect_sums_unshifted(const Scene& scene, const std::string& what, std::vector<int> kinds) {
+  LightBatch batch(scene, BIDIR_VCM);
+  batch.run("tests/photon_shift_test.cl", "photon_shift_sums_unshifted", 2);
+  // Relative differences by parent kind: the recomputation from a rough parent goes through its
+  // BSDF's pdfs and the segment's length and cosines again (float rounding, largest on short
+  // segments and grazing arrivals); from a light the zero shift scales the photon's own sums by 1.
+  std::vector<std::vector<double>> rel(4);
+  for (cl_uint e = 0; e < batch.entries; ++e) {
+    if (batch.kind[e] <= 0) continue;  // no stored vertex, or a delta parent
+    const cl_float4 &v = batch.out[2 * e], &c = batch.out[2 * e + 1];
+    rel[batch.kind[e]].push_back(std::fabs(v.s[1] - v.s[0]) / std::fabs(v.s[0]));
+    if (v.s[2] != 0.0f) rel[batch.kind[e]].push_back(std::fabs(v.s[3] - v.s[2]) / std::fabs(v.s[2]));
+    if (c.s[0] != 0.0f) rel[batch.kind[e]].push_back(std::fabs(c.s[1] - c.s[0]) / std::fabs(c.s[0]));
+  }
+  // Measured (Cornell box, rough parents): median 2.9e-5 (dvcm), p99 1.3e-3, max 0.32 (a grazing
+  // arrival); light parents 0.
+  expect_small_by_kind(rel, kinds, what, 1e-4, 5e-3);
+}
+
+// G-BDPT's light-tracing shift (kernels/gbidir/light_tracing.h, lt_offset) between two points the
+// camera sees, there and back (kernels/tests/light_tracing_test.cl): the pair's pdf ratios invert
+// (R(x -> y) R(y -> x) = 1, so base and offset weights of a pair sum to 1) and the way back gives
+// x's own light-tracing value times R(y -> x), its weight w_lt(x) recomputed from the re-aimed
+// sums, for every parent kind, under bdpt's and vcm's options.
+void expect_light_tracing_round_trip(const Scene& scene, const std::string& what, std::vector<int> kinds) {
+  for (int technique : {BIDIR_BDPT, BIDIR_VCM}) {
+    LightBatch batch(scene, technique);
+    batch.run("tests/light_tracing_test.cl", "lt_offset_round_trip", 1);
+    std::vector<std::vector<double>> ratios(4), values(4);
+    for (cl_uint e = 0; e < batch.entries; ++e) {
+      if (batch.kind[e] <= 0) continue;
+      ratios[batch.kind[e]].push_back(std::fabs(batch.out[e].s[0] - 1.0));
+      values[batch.kind[e]].push_back(std::fabs(batch.out[e].s[1] - 1.0));
+    }
+    const std::string name = what + (technique == BIDIR_VCM ? " (vcm)" : " (bdpt)");
+    // Measured: R R' within 2.4e-7 of 1 everywhere; values: rough parents median 2.2e-6, p99
+    // 1.4e-4, max 0.037 (through the parent's BSDF pdfs again), lights and infinite 5e-7. Without
+    // |J| in R the values are off by 0.5 (median) and R R' still 1.
+    expect_small_by_kind(ratios, kinds, name + ": R R'", 1e-6, 1e-5);
+    expect_small_by_kind(values, kinds, name + ": value", 1e-4, 2e-3);
   }
 }
 
@@ -178,6 +233,16 @@ TEST(PhotonShift, SumsOfAnUnshiftedPhotonAreItsOwn) {
   expect_sums_unshifted(project("cornell-box.xml"), "cornell-box", {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
   expect_sums_unshifted(project("environment.xml"), "environment", {GPM_PARENT_INFINITE});
   expect_sums_unshifted(test::point_light_beside_zero_area_emitter(), "point light", {GPM_PARENT_LIGHT});
+}
+
+TEST(LightTracingShift, RoundTripInvertsDensitiesAndValues) {
+  auto project = [](const char* file, int size) {
+    return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), size);
+  };
+  expect_light_tracing_round_trip(project("cornell-box.xml", 24), "cornell-box",
+                                  {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
+  // Few of the environment's light subpaths land where the camera sees: a larger film.
+  expect_light_tracing_round_trip(project("environment.xml", 64), "environment", {GPM_PARENT_INFINITE});
 }
 
 }  // namespace

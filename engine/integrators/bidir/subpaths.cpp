@@ -32,6 +32,7 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
       light_paths_(in.context, capacity_),
       camera_paths_(in.context, lt() ? 0 : capacity_),
       light_origins_(in.context, capacity_),
+      seen_(in.context, capacity_),
       store_(in.context, capacity_ * size_t(store_vertices_)),
       camera_vertices_(in.context, lt() ? 0 : capacity_),
       connectable_(in.context, lt() ? 0 : capacity_),
@@ -61,7 +62,7 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
     counters_.reset();
     light_shade_
         .args(p, o, active, cl_uint(capacity_), in_.device_scene.camera(), queues_.rays[cur], queues_.slots[cur],
-              queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, sink.splats.slots(), light_paths_, store_,
+              queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, sink.splats.slots(), seen_, light_paths_, store_,
               counters_.buffer(), primary_, in_.device_scene)
         .run(active);
     counters_.read();
@@ -71,7 +72,9 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
     if (shadows > 0) {
       occlude(in_.embree, shadow_rays_, shadows, "camera_connection");
       camera_blocked_.args(shadows, shadow_rays_, sink.splats.slots()).run(shadows);
-      if (sink.gather_into) {
+      if (sink.take_splats) {
+        sink.take_splats(p.pixel_count);
+      } else if (sink.gather_into) {
         sink.splats.gather(in_.device_scene.camera(), in_.scene.camera.height, p.pixel_count, *sink.gather_into);
       } else if (sink.path_sums) {
         splats_to_paths_.args(p.pixel_count, sink.splats.slots(), *sink.path_sums).run(p.pixel_count);

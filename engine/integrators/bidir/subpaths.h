@@ -8,8 +8,10 @@
 // (the pixel, or the chain); light vertices seen by the camera (t = 1) write the splat slot of
 // their path, which after every light bounce gather_into (a film layer) receives, or path_sums
 // adds into its path's entry wherever it lands, or, without either, the caller reads (one
-// strategy per path under multiplexing: at most one splat a path).
+// strategy per path under multiplexing: at most one splat a path), unless take_splats takes them
+// (the gradient integrators shift them: the light vertex each slot's splat came from is in seen()).
 #pragma once
+#include <functional>
 #include <optional>
 
 #include "render/aux_layers.h"
@@ -33,6 +35,7 @@ struct BidirSink {
   SplatFilm& splats;
   Buffer<Vec4>* gather_into = nullptr;
   Buffer<Vec4>* path_sums = nullptr;
+  std::function<void(cl_uint slots)> take_splats = nullptr;  // after each light bounce: slots [0, slots)
 };
 
 // A batch's stored light vertices as photons (pm, vcm: vertex j of subpath i at
@@ -70,6 +73,8 @@ class BidirSubpaths {
   PhotonGrid grid() const;
   const Buffer<GdrBidirPathState>& light_paths() const { return light_paths_; }
   const Buffer<GdrBidirVertex>& store() const { return store_; }
+  const Buffer<GdrLightOrigin>& origins() const { return light_origins_; }
+  const Buffer<GdrBidirVertex>& seen() const { return seen_; }  // each valid splat slot's light vertex
   int stored_bound() const { return stored_bound_; }
 
   // Adds the counters' totals to the stats.
@@ -106,7 +111,7 @@ class BidirSubpaths {
   RayQueues queues_;
   Buffer<GdrBidirPathState> light_paths_, camera_paths_;
   Buffer<GdrLightOrigin> light_origins_;
-  Buffer<GdrBidirVertex> store_, camera_vertices_;
+  Buffer<GdrBidirVertex> seen_, store_, camera_vertices_;
   Buffer<cl_uint> connectable_;
   std::optional<DevicePrimitives> primitives_;      // merging: the grid's sort
   Buffer<cl_uint> grid_keys_buffer_, grid_starts_, grid_sorted_;

@@ -36,9 +36,7 @@ GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSe
       merging_(merging),
       subpaths_(in, merging ? BIDIR_VCM : BIDIR_BDPT, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()),
-      light_tracing_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height),
-      add_light_tracing_(groups_.kernels().make(groups_.program(), "gbdpt_add_light_tracing")) {
-  light_tracing_.fill(Vec4{});
+      light_tracing_(in, groups_, subpaths_.capacity()) {
   if (merging_) shifts_.emplace(in, groups_);
 }
 
@@ -51,7 +49,11 @@ void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t
   p.vm_factor = o.vm_factor;
   p.vc_factor = o.vc_factor;
   const bool light = light_subpaths_allowed(settings.max_depth) && p.path.light_count > 0;
-  if (light) subpaths_.trace_light(p.path, o, BidirSink{groups_.acc(), splats_, &light_tracing_});
+  if (light) {
+    BidirSink sink{groups_.acc(), splats_};
+    sink.take_splats = [&](cl_uint slots) { light_tracing_.shift(p, o, slots, subpaths_, splats_, groups_); };
+    subpaths_.trace_light(p.path, o, sink);
+  }
   const GroupLightSubpaths subpaths{subpaths_.light_paths(), subpaths_.store(), cl_uint(subpaths_.capacity()),
                                     subpaths_.stored_bound()};
   const PhotonGrid grid = subpaths_.grid();
@@ -62,10 +64,7 @@ void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t
   subpaths_.report(in_.context.stats());
 }
 
-void GradientBidirectional::end_pass() {
-  const cl_uint pixels = cl_uint(light_tracing_.size());
-  add_light_tracing_.args(pixels, light_tracing_, groups_.acc()).run(pixels);
-}
+void GradientBidirectional::end_pass() { light_tracing_.end_pass(groups_); }
 
 RenderResult GradientBidirectional::render(const RenderSettings& settings) {
   warn_beyond_store(merging_ ? "gvcm" : "gbdpt", settings.max_depth);

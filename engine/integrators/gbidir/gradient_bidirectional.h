@@ -9,10 +9,12 @@
 // vertex are diffuse (else that connection's shift fails, counted in
 // shift_failures/glossy_connection). Base and offset of a strategy share the balance heuristic
 // over those strategies of both paths (kernels/gbidir/weights.h); the primal is the sum of the base
-// paths' shares, as G-PT's. Light tracing (t = 1) is not shifted: the light subpaths' connections
-// to the camera, under bdpt's weight over every strategy, are splatted into the layer kept out of
-// the gradients (`direct`, beside the emission the camera sees directly), and the shifted
-// strategies' weights leave each path light tracing's share. Outputs and reconstruction are G-PT's.
+// paths' shares, as G-PT's. Light tracing (t = 1), under bdpt's weight over every strategy, is
+// shifted from its splat pixel (LightTracingShifts): after each light bounce the light vertices the
+// camera sees are moved to the neighbour pixels by camera rays through the shifted film positions,
+// reconnected to their parents, and base and offsets splat into the pairs' accumulators by their
+// own pair weight; the shifted strategies' weights leave each path light tracing's share. Outputs
+// and reconstruction are G-PT's.
 //
 // Gradient-domain vertex connection and merging (`gvcm`, Sun et al. 2017) is the same integrator
 // with merging: every rough camera vertex of base and offsets also merges with the pass's photons
@@ -21,12 +23,11 @@
 // the base's vertex the same photons. The light subpaths are vcm's, the radius schedule vcm's, and
 // every strategy's weight (connections, merges, emission, light points) is the balance heuristic
 // over all of VCM's strategies of base and offset, the sums carrying merging's factors; light
-// tracing, under vcm's weight over every strategy, stays unshifted.
+// tracing, under vcm's weight over every strategy, is shifted as gbdpt's.
 //
 // Left out: the manifold shift is refused (its offsets would need their bidirectional sums through
-// the walk's vertices); light tracing's paths get no gradients (the paper shifts them from their
-// splat pixel); gvcm's photons whose parent is a delta vertex are not shifted (as gpm's: counted
-// in shift_failures/photon_parent, the base keeps the pair's weight).
+// the walk's vertices); photons and light-traced vertices whose parent is a delta vertex are not
+// shifted (as gpm's: counted in shift_failures/photon_parent, the base keeps the pair's weight).
 //
 // Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux
 // as gpt's; gvcm: radius and radius_alpha as vcm's; recon, recon_solver, alpha: the reconstruction
@@ -36,6 +37,7 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/bidir/subpaths.h"
+#include "integrators/gbidir/light_tracing_shifts.h"
 #include "integrators/gbidir/photon_shifts.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "render/splat_film.h"
@@ -63,8 +65,7 @@ class GradientBidirectional : public GradientPathTracer {
   std::optional<BidirSettings> merging_;
   BidirSubpaths subpaths_;  // the light subpaths, one a group
   SplatFilm splats_;        // their connections to the camera (t = 1)
-  Buffer<Vec4> light_tracing_;  // and the pass's sum of them, a pixel
-  Kernel add_light_tracing_;
+  LightTracingShifts light_tracing_;  // and those shifted to the neighbour pixels
   std::optional<PhotonShifts> shifts_;  // gvcm's merges
 };
 
