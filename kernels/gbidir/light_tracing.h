@@ -161,6 +161,12 @@ __kernel void gbdpt_lt_offset_blocked(uint count, __global const GdrRay* shadow_
   }
 }
 
+// Whether pixel p of an axis of `size` pixels samples its filter's whole support (filter_range).
+inline int lt_axis_uncut(const GdrCamera* cam, int p, int size) {
+  float2 range = filter_range(cam, p, size);
+  return range.x == -cam->filter_radius && range.y == cam->filter_radius;
+}
+
 // Work item y adds to film row y of `layers` the splats of the rows whose footprints reach it (the
 // splat film's order: path/splat.h): for pixel P there, BASE(k) gets the base's value times P's
 // filter at r and the pair weight (1 where P's neighbour P + d_k is outside the image), OFFSET(k)
@@ -186,11 +192,20 @@ __kernel void gbdpt_lt_gather(__global const GdrCamera* camera, __global const u
       float3 c = vload3(0, splats[i].value);
       float4 pr[GPT_OFFSETS];
       for (int k = 0; k < GPT_OFFSETS; ++k) pr[k] = pairs[i * GPT_OFFSETS + k];
+      // An offset lands in the neighbour at r + d_k: along d_k's axis the neighbour's filter there
+      // is this pixel's at r unless the image cuts either's range; across it, the same pixel's.
+      float wy_n[GPT_OFFSETS];
+      for (int k = 0; k < GPT_OFFSETS; ++k) {
+        int dy = OFFSET_PIXEL_DY(k);
+        wy_n[k] = dy == 0 || lt_axis_uncut(&cam, y, h) && lt_axis_uncut(&cam, y + dy, h)
+                      ? wy
+                      : camera_axis_weight_full(&cam, y + dy, h, raster.y + (float)dy, full);
+      }
       for (int x = lo.x; x <= hi.x; ++x) {
-        float hb = wy * camera_axis_weight_full(&cam, x, w, raster.x, full);
+        float wx = camera_axis_weight_full(&cam, x, w, raster.x, full), hb = wy * wx;
         __global float4* px = &layers[(uint)(y * w + x) * GBDPT_LT_LAYERS];
         for (int k = 0; k < GPT_OFFSETS; ++k) {
-          int nx = x + OFFSET_PIXEL_DX(k), ny = y + OFFSET_PIXEL_DY(k);
+          int dx = OFFSET_PIXEL_DX(k), nx = x + dx, ny = y + OFFSET_PIXEL_DY(k);
           if (nx < 0 || ny < 0 || nx >= w || ny >= h) {
             if (hb > 0.0f) px[GPT_ACC_BASE(k)] += (float4)(c * hb, 0.0f);
             continue;
@@ -198,8 +213,10 @@ __kernel void gbdpt_lt_gather(__global const GdrCamera* camera, __global const u
           float pair = 1.0f / (1.0f + pr[k].w);
           if (hb > 0.0f) px[GPT_ACC_BASE(k)] += (float4)(c * (hb * pair), 0.0f);
           if (!(pr[k].w > 0.0f)) continue;
-          float2 r2 = raster + (float2)(OFFSET_PIXEL_DX(k), OFFSET_PIXEL_DY(k));
-          float ho = camera_axis_weight_full(&cam, nx, w, r2.x, full) * camera_axis_weight_full(&cam, ny, h, r2.y, full);
+          float wx_n = dx == 0 || lt_axis_uncut(&cam, x, w) && lt_axis_uncut(&cam, nx, w)
+                           ? wx
+                           : camera_axis_weight_full(&cam, nx, w, raster.x + (float)dx, full);
+          float ho = wx_n * wy_n[k];
           if (ho > 0.0f) px[GPT_ACC_OFFSET(k)] += (float4)(pr[k].xyz * (ho * pair), 0.0f);
         }
       }

@@ -47,14 +47,17 @@ Bidirectional vcm_balance(const RenderInputs& in) {
   return Bidirectional(in, s);
 }
 
-// Measured (means of the two runs): gradients 0.0070, 0.0020, 0.00061; primal 0.231, 0.0157,
-// 0.0029; reconstruction 0.228, 0.0145, 0.0026.
+// Measured (means of the two runs): gradients 0.0070, 0.0020, 0.00061 (0.0129, 0.0037, 0.0011
+// with light tracing left unshifted); primal 0.231, 0.0157, 0.0029; reconstruction 0.228, 0.0145,
+// 0.0026.
 TEST(Gvcm, ErrorFallsAsPassesGrow) {
   auto g = gvcm(box().on_device.inputs());
   test::expect_errors_fall_with_passes(*g, box());
 }
 
-// Measured at 4 and 16 passes: gvcm 0.0140 and 0.0041; vcm's differences 0.0327 and 0.0082.
+// Measured at 4 and 16 passes (sums of the two seeds): gvcm 0.0140 and 0.0041, vcm's differences
+// 0.0655 and 0.0164 (ratios 0.21, 0.25); with light tracing left unshifted gvcm 0.0258 and 0.0075
+// (0.39, 0.46).
 TEST(Gvcm, GradientsBeatVcmDifferences) {
   ConsistencyScene& b = box();
   auto g = gvcm(b.on_device.inputs());
@@ -65,7 +68,7 @@ TEST(Gvcm, GradientsBeatVcmDifferences) {
       e_gvcm += consistency_errors(*g, spp, seed, b).gradients;
       e_vcm += b.image_gradient_relmse(vcm.render(consistency_settings(spp, seed)).image.rgb_layer(""));
     }
-    EXPECT_LT(e_gvcm, 0.6 * e_vcm) << spp << " passes";
+    EXPECT_LT(e_gvcm, 0.35 * e_vcm) << spp << " passes";
   }
 }
 
