@@ -3,7 +3,9 @@
 // (bidir/bidir.cl splats it, under bdpt's or vcm's weight w_lt over every strategy) is path x; its
 // offset y for neighbour k is the light path with x1 replaced by y1, the first hit of the camera
 // ray through r + d_k, reconnected to x1's parent p (the vertex before it: a rough light vertex,
-// the light point, or a light at infinity; a delta parent fails: no manifold walk here). The
+// the light point, or a light at infinity). A path whose parent is a delta vertex has no offsets
+// (no manifold walk here), nor has any path it could be shifted from (the shift keeps the
+// parent): it joins the layer kept out of the gradients, as the emission seen directly. The
 // light prefix up to p is the base's, so (photon_shift.h's re-aimed segment)
 //   f(y)/p(x) = beta(x1) F(p -> y1)/F(p -> x1) G(p, y1)/G(p, x1),
 // and the film shift has unit Jacobian on the film, so in surface area
@@ -18,12 +20,14 @@
 // base weight 1, as does a pixel whose neighbour is outside the image.
 //
 // Per light bounce, after the camera connections' shadow rays:
-//   gbdpt_lt_offset_rays     the offsets' camera rays (pairs zeroed);
+//   gbdpt_lt_offset_rays     the offsets' camera rays (pairs zeroed; GBDPT_LT_UNSHIFTED marks a
+//                            delta parent's);
 //   gbdpt_lt_offset_eval     after Embree: each offset's value and R into pairs[4 i + k], and the
 //                            shadow ray from y1 to the parent;
 //   gbdpt_lt_offset_blocked  zeroes the pairs whose ray was blocked;
 //   gbdpt_lt_gather          base and offsets into the pass's layers (the accumulators' BASE and
-//                            OFFSET slots, whole image), rows owned as the splat film's gather;
+//                            OFFSET slots, or DIRECT, whole image), rows owned as the splat film's
+//                            gather;
 // and at the end of the pass gbdpt_add_light_tracing adds the layers into the accumulators.
 #pragma once
 #include "bidir/subpath_mis.h"
@@ -37,12 +41,35 @@
 #include "shared/gpt_types.h"
 #include "shared/splat_types.h"
 
-__kernel void gbdpt_lt_offset_rays(uint count, __global const GdrCamera* camera, __global const GdrSplat* splats,
-                                   __global float4* pairs, __global GdrRayHit* rays, __global uint* counters) {
+// The parent of light vertex x, seen by the camera from light subpath i (`seen`, after the bounce
+// that reached it): x's entry in the light-vertex store, or the one after the last where it was
+// not stored, gives the vertex before it.
+inline PhotonParent lt_parent(const SceneData* s, const GdrBidirVertex* x, uint i, uint stride,
+                              __global const GdrBidirPathState* light_paths, __global const GdrBidirVertex* store,
+                              __global const GdrLightOrigin* origins) {
+  int j = light_paths[i].stored;
+  if (j > 0 && store[(uint)(j - 1) * stride + i].depth == x->depth) j -= 1;
+  return photon_parent(s, store, origins, stride, (uint)j * stride + i, x);
+}
+
+__kernel void gbdpt_lt_offset_rays(GdrGptParams params, uint count, uint stride, __global const GdrCamera* camera,
+                                   __global const GdrSplat* splats, __global const GdrBidirVertex* seen,
+                                   __global const GdrBidirPathState* light_paths,
+                                   __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                   __global float4* pairs, __global GdrRayHit* rays, __global uint* counters,
+                                   SCENE_DATA_ARGS) {
   uint i = get_global_id(0);
   if (i >= count) return;
   for (int k = 0; k < GPT_OFFSETS; ++k) pairs[i * GPT_OFFSETS + k] = (float4)(0.0f);
   if (!splats[i].valid) return;
+  SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  GdrBidirVertex x = seen[i];
+  if (lt_parent(&s, &x, i, stride, light_paths, store, origins).kind == GPM_PARENT_NONE) {
+    // A delta parent: no offset of this path, nor of any it could be shifted from, exists.
+    pairs[i * GPT_OFFSETS].w = GBDPT_LT_UNSHIFTED;
+    atomic_inc(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT]);
+    return;
+  }
   GdrCamera cam = *camera;
   float2 r = (float2)(splats[i].raster[0], splats[i].raster[1]);
   CameraRay rs[GPT_OFFSETS];
@@ -122,14 +149,7 @@ __kernel void gbdpt_lt_offset_eval(GdrGptParams params, GdrBidirOptions opts, ui
   }
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
   GdrBidirVertex x = seen[i];
-  // x's entry in the light-vertex store, or the one after the last where it was not stored.
-  int j = light_paths[i].stored;
-  if (j > 0 && store[(uint)(j - 1) * stride + i].depth == x.depth) j -= 1;
-  PhotonParent pa = photon_parent(&s, store, origins, stride, (uint)j * stride + i, &x);
-  if (pa.kind == GPM_PARENT_NONE) {
-    atomic_inc(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT]);
-    return;
-  }
+  PhotonParent pa = lt_parent(&s, &x, i, stride, light_paths, store, origins);
   GdrCamera cam = *camera;
   Surface sx = surface_at(&s, x.prim, x.u, x.v), sy = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
   GdrBidirVertex y;
@@ -192,6 +212,13 @@ __kernel void gbdpt_lt_gather(__global const GdrCamera* camera, __global const u
       float3 c = vload3(0, splats[i].value);
       float4 pr[GPT_OFFSETS];
       for (int k = 0; k < GPT_OFFSETS; ++k) pr[k] = pairs[i * GPT_OFFSETS + k];
+      if (pr[0].w == GBDPT_LT_UNSHIFTED) {
+        for (int x = lo.x; x <= hi.x; ++x) {
+          float hb = wy * camera_axis_weight_full(&cam, x, w, raster.x, full);
+          if (hb > 0.0f) layers[(uint)(y * w + x) * GBDPT_LT_LAYERS + GPT_ACC_DIRECT] += (float4)(c * hb, 0.0f);
+        }
+        continue;
+      }
       // An offset lands in the neighbour at r + d_k: along d_k's axis the neighbour's filter there
       // is this pixel's at r unless the image cuts either's range; across it, the same pixel's.
       float wy_n[GPT_OFFSETS];

@@ -13,8 +13,10 @@
 #define GBDPT_OFFSET_GLOSSY 3  // at a vertex of its own, but the shift there is no reconnection: fails
 
 // The layers G-BDPT's light tracing adds a pixel during a pass (gbidir/light_tracing.h): the
-// accumulators' GPT_ACC_BASE(k) and GPT_ACC_OFFSET(k), the first eight.
-#define GBDPT_LT_LAYERS (2 * GPT_OFFSETS)
+// accumulators' (GPT_ACC_BASE(k), GPT_ACC_OFFSET(k), and GPT_ACC_DIRECT for the paths it cannot
+// shift). A slot's first pair holds GBDPT_LT_UNSHIFTED as its R for those.
+#define GBDPT_LT_LAYERS GPT_ACC_COUNT
+#define GBDPT_LT_UNSHIFTED (-1.0f)
 
 // What a photon's parent is (the vertex its light subpath reached it from; gbidir/photon_shift.h).
 #define GPM_PARENT_NONE 0      // a delta vertex: no reconnection

@@ -25,7 +25,10 @@ void LightTracingShifts::shift(const GdrGptParams& p, const GdrBidirOptions& o, 
   const Buffer<GdrCamera>& camera = in_.device_scene.camera();
   DeviceCounters& counters = groups.counters();
   counters.reset();
-  rays_.args(count, camera, splats.slots(), pairs_, offset_rays_, counters.buffer()).run(count);
+  rays_
+      .args(p, count, cl_uint(subpaths.capacity()), camera, splats.slots(), subpaths.seen(), subpaths.light_paths(),
+            subpaths.store(), subpaths.origins(), pairs_, offset_rays_, counters.buffer(), in_.device_scene)
+      .run(count);
   const cl_uint rays = counters.read()[GPT_COUNTER_LT_OFFSET_RAYS];
   if (rays > 0) {
     intersect(in_.embree, offset_rays_, rays, false, "light_tracing_offset");
