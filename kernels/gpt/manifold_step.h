@@ -6,6 +6,7 @@
 // up to x_c, where it has joined the base. A failed walk, a chain that escapes or grows past
 // MANIFOLD_MAX_CHAIN vertices: the offset contributes zero and its base takes the full weight.
 #pragma once
+#include "gbidir/weights.h"
 #include "gradient/offsets.h"
 #include "manifold/walk.h"
 #include "shift/policy.h"
@@ -114,7 +115,10 @@ inline float chain_half_jacobian(const SceneData* sd, GdrManifoldPoint at, int f
 
 // A solved walk becomes the offset's prefix up to x_c: its own BSDF toward the new chain, the
 // chain's lobes, and the Jacobian g_walk / g_origin (times the half-vector Jacobians of
-// near-specular vertices), over the base's pdfs; the base's Russian roulette carried over.
+// near-specular vertices), over the base's pdfs; the base's Russian roulette carried over. Built
+// for G-BDPT (GDR_GBDPT), the offset's bidirectional sums scatter at its vertex toward the new
+// chain and pass through the chain's vertices as the base's did (arrival at x_c is the shade
+// step's, as for every offset that joins there).
 __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const GdrManifoldWalk* walks,
                                 __global const GdrManifoldResult* results, __global const GptChain* chains,
                                 __global GptOffsetState* offsets, __global uint* counters, SCENE_DATA_ARGS) {
@@ -130,6 +134,9 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
   int reason = R.status ? GPT_COUNTER_FAIL_MANIFOLD : 0;
   if (!reason && !(R.g_origin > 0.0f && R.g_walk > 0.0f)) reason = GPT_COUNTER_FAIL_ZERO;
   ShiftPrefix pre = offset_prefix(&o);
+#if defined(GDR_GBDPT)
+  GdrBidirOptions mo = gbdpt_options(&params);
+#endif
   float3 off[MANIFOLD_MAX_CHAIN + 2], bp[MANIFOLD_MAX_CHAIN + 2];
   if (!reason) {
     ShiftVertex y = shift_vertex_at(&s, o.prim, o.b1, o.b2, -vload3(0, o.dir), params.shift_threshold);
@@ -148,6 +155,9 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
     pre.throughput *= f / c.origin_pdf;
     pre.ratio *= p / c.origin_pdf;
     if (c.origin_rr < 1.0f) shift_roulette(&pre, c.origin_rr);
+#if defined(GDR_GBDPT)
+    gbdpt_sums_scatter(0, p, bsdf_pdf(&y.b, wil, y.wo), fabs(dot(y.su.ng, wi)), &mo, &o.mis);
+#endif
   }
   float jac = R.g_walk / R.g_origin;
   for (int k = 0; k < m && !reason; ++k) {
@@ -157,6 +167,9 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
     float3 wa = normalize(off[k] - off[k + 1]), wb = normalize(off[k + 2] - off[k + 1]);
     float3 wal = frame_to_local(&fr, wa), wbl = frame_to_local(&fr, wb);
     int flags = W.v[k].flags;
+#if defined(GDR_GBDPT)
+    gbdpt_sums_arrive(length(off[k + 1] - off[k]), fabs(dot(su.ng, wa)), &o.mis);
+#endif
     if (flags & MANIFOLD_VERTEX_DELTA) {
       BsdfSample so;
       if (!bsdf_sample_delta_lobe(&b, wal, (flags & MANIFOLD_VERTEX_TRANSMIT) != 0, &so)) {
@@ -167,6 +180,9 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
       pre.ratio *= so.pdf / c.pdf[k];
       pre.last_pdf = so.pdf;
       pre.last_delta = 1;
+#if defined(GDR_GBDPT)
+      gbdpt_sums_scatter(1, so.pdf, 0.0f, fabs(dot(su.ng, wb)), &mo, &o.mis);
+#endif
     } else {
       float3 f = bsdf_eval(&b, wal, wbl);
       float p = bsdf_pdf(&b, wal, wbl);
@@ -180,6 +196,9 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
       pre.ratio *= p / c.pdf[k];
       pre.last_pdf = p;
       pre.last_delta = 0;
+#if defined(GDR_GBDPT)
+      gbdpt_sums_scatter(0, p, bsdf_pdf(&b, wbl, wal), fabs(dot(su.ng, wb)), &mo, &o.mis);
+#endif
     }
     if (!sides_agree(wb, su.ng, wbl.z)) reason = GPT_COUNTER_FAIL_ZERO;
     if (c.rr[k] < 1.0f) shift_roulette(&pre, c.rr[k]);

@@ -3,12 +3,6 @@
 namespace gdr {
 namespace {
 
-// gpt's settings for `name`, whose offsets carry bidirectional MIS sums: no manifold walk.
-GptSettings settings_with_sums(const IntegratorParams& params, const std::string& name) {
-  return gpt_settings_without_manifold(
-      params, name + " shifts by hybrid or replay (a manifold walk's offsets carry no bidirectional MIS sums)");
-}
-
 // The light subpaths' options: bdpt's store and connections to the camera, the balance heuristic
 // (the options the kernels weigh the camera subpaths by: gbidir/weights.h, gbdpt_options).
 GdrBidirOptions light_options() {
@@ -18,11 +12,14 @@ GdrBidirOptions light_options() {
 
 }  // namespace
 
-const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux"};
-const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "radius", "radius_alpha"};
+const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
+                                               "manifold_tolerance", "manifold_precision"};
+const std::vector<std::string> kGvcmParams = {"shift",          "shift_threshold",    "aux",
+                                              "manifold_iterations", "manifold_tolerance", "manifold_precision",
+                                              "radius",         "radius_alpha"};
 
-GptSettings gbdpt_settings(const IntegratorParams& params) { return settings_with_sums(params, "gbdpt"); }
-GptSettings gvcm_settings(const IntegratorParams& params) { return settings_with_sums(params, "gvcm"); }
+GptSettings gbdpt_settings(const IntegratorParams& params) { return gpt_settings(params); }
+GptSettings gvcm_settings(const IntegratorParams& params) { return gpt_settings(params); }
 
 BidirSettings gvcm_photon_settings(const IntegratorParams& params) {
   BidirSettings s = vcm_settings(params);

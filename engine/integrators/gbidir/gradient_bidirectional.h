@@ -25,12 +25,13 @@
 // over all of VCM's strategies of base and offset, the sums carrying merging's factors; light
 // tracing, under vcm's weight over every strategy, is shifted as gbdpt's.
 //
-// Left out: the manifold shift is refused (its offsets would need their bidirectional sums through
-// the walk's vertices); photons and light-traced vertices whose parent is a delta vertex are not
-// shifted (as gpm's: counted in shift_failures/photon_parent, the base keeps the pair's weight).
+// The manifold shift walks the camera subpaths' offsets across specular chains as gpt's does, their
+// bidirectional sums carried through the walk's vertices (kernels/gpt/manifold_step.h). Left out:
+// photons and light-traced vertices whose parent is a delta vertex are not shifted (as gpm's:
+// counted in shift_failures/photon_parent; light tracing's go to the direct layer).
 //
-// Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux
-// as gpt's; gvcm: radius and radius_alpha as vcm's; recon, recon_solver, alpha: the reconstruction
+// Parameters (IntegratorParams): shift (hybrid, the default, | replay | manifold), shift_threshold,
+// aux and the manifold walk's as gpt's; gvcm: radius and radius_alpha as vcm's; recon, recon_solver, alpha: the reconstruction
 // (render/gradient_images.h). Paths are bdpt's: at most kBdptMaxSegments segments.
 #pragma once
 #include <optional>
