@@ -62,8 +62,8 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
     counters_.reset();
     light_shade_
         .args(p, o, active, cl_uint(capacity_), in_.device_scene.camera(), queues_.rays[cur], queues_.slots[cur],
-              queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, sink.splats.slots(), seen_, light_paths_, store_,
-              counters_.buffer(), primary_, in_.device_scene)
+              queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, sink.splats.slots(), seen_, light_paths_,
+              store_, counters_.buffer(), primary_, in_.device_scene)
         .run(active);
     counters_.read();
     if (counters_[BIDIR_COUNTER_LIGHT_VERTICES] > 0) ++stored_bound_;

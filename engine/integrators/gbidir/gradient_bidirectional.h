@@ -31,8 +31,8 @@
 // counted in shift_failures/photon_parent; light tracing's go to the direct layer).
 //
 // Parameters (IntegratorParams): shift (hybrid, the default, | replay | manifold), shift_threshold,
-// aux and the manifold walk's as gpt's; gvcm: radius and radius_alpha as vcm's; recon, recon_solver, alpha: the reconstruction
-// (render/gradient_images.h). Paths are bdpt's: at most kBdptMaxSegments segments.
+// aux and the manifold walk's as gpt's; gvcm: radius and radius_alpha as vcm's; recon,
+// recon_solver, alpha: the reconstruction (render/gradient_images.h). Paths are bdpt's: at most kBdptMaxSegments segments.
 #pragma once
 #include <optional>
 
