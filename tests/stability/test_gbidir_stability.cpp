@@ -1,11 +1,13 @@
 // The gradient-domain bidirectional integrators (gbdpt, gpm, gvcm) stay finite on every project
 // scene (glass, mirrors, rough metals, an environment map with a sun) and beside a delta light with
 // a degenerate emitter (a zero-area triangle and a point light: gbdpt's and gvcm's offsets'
-// connections end on both, gpm's and gvcm's photons are shifted from both): every pixel of every layer finite, no sample rejected
-// as NaN or Inf, something rendered, connections or merges made. Renders of 24 pixels wide, 4
+// connections end on both, gpm's and gvcm's photons and gbdpt's light-traced vertices are shifted
+// from both; gbdpt also with the manifold shift): every pixel of every layer finite, no sample
+// rejected as NaN or Inf, something rendered, connections, merges or light-tracing offsets made. Renders of 24 pixels wide, 4
 // samples a pixel, seed 404, on a context of their own with stats.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 
 #include "accel/embree_scene.h"
@@ -20,12 +22,13 @@ namespace {
 
 // `integrator` renders `scene`; `made` counts what it must have done (connections, merges).
 void expect_stable(const char* integrator, const char* made, const Scene& scene, int max_depth,
-                   const std::string& what) {
+                   const std::string& what, const IntegratorParams& params = {}) {
   Stats stats;
   Context ctx(select_device(""), &stats);
   EmbreeScene embree(scene, BuildQuality::Low, &stats);
   DeviceScene device(ctx, scene);
-  std::unique_ptr<Integrator> gradient = find_integrator(integrator).make(RenderInputs{ctx, scene, embree, device}, {});
+  std::unique_ptr<Integrator> gradient =
+      find_integrator(integrator).make(RenderInputs{ctx, scene, embree, device}, params);
   RenderSettings s;
   s.spp = 4;
   s.seed = 404;
@@ -48,8 +51,20 @@ TEST(GbdptStability, ProjectScenesAreFinite) {
   EXPECT_GE(scenes, 5);
 }
 
+// With the manifold shift: the camera subpaths' offsets walk the glass and mirror chains.
+TEST(GbdptStability, ProjectScenesAreFiniteWithManifoldShift) {
+  const IntegratorParams manifold(std::map<std::string, std::string>{{"shift", "manifold"}});
+  int scenes = for_each_project_scene(24, [&](const std::string& path, const Scene& scene) {
+    expect_stable("gbdpt", "gbdpt/connections", scene, scene.max_depth > 0 ? scene.max_depth : 16, path, manifold);
+  });
+  EXPECT_GE(scenes, 5);
+}
+
 TEST(GbdptStability, ZeroAreaLightAndPointLight) {
   expect_stable("gbdpt", "gbdpt/connections", point_light_beside_zero_area_emitter(), -1,
+                "point light and zero-area emitter");
+  // Light tracing's vertices lit by the point light are shifted from it.
+  expect_stable("gbdpt", "gbdpt/light_tracing_offsets", point_light_beside_zero_area_emitter(), -1,
                 "point light and zero-area emitter");
 }
 
