@@ -81,9 +81,9 @@ TEST(Gvcm, MeanGradientsConverge) {
   EXPECT_LT(test::mean_gradient_relmse(*g, 64, 8, box()), 0.00045);
 }
 
-void expect_primal_agrees_with_vcm(const std::string& file, double tolerance) {
+void expect_primal_agrees_with_vcm(const std::string& file, double tolerance, const IntegratorParams& params = {}) {
   ConsistencyScene& b = box(file);
-  auto g = gvcm(b.on_device.inputs());
+  auto g = gvcm(b.on_device.inputs(), params);
   Bidirectional vcm = vcm_balance(b.on_device.inputs());
   double sum_gvcm = 0, sum_vcm = 0;
   for (uint32_t seed = 1; seed <= 8; ++seed) {
@@ -98,6 +98,14 @@ void expect_primal_agrees_with_vcm(const std::string& file, double tolerance) {
 TEST(Gvcm, PrimalAgreesWithVcm) {
   expect_primal_agrees_with_vcm("cornell-box.xml", 0.01);
   expect_primal_agrees_with_vcm("cornell-box-caustics.xml", 0.01);
+}
+
+// With the manifold shift (the offsets' sums through the walks' vertices), on the caustics box:
+// measured 0.9996 (0.9976 with the sums left as they were before the walk: a bias this bound does
+// not resolve).
+TEST(Gvcm, PrimalAgreesWithVcmUnderManifoldShift) {
+  expect_primal_agrees_with_vcm("cornell-box-caustics.xml", 0.01,
+                                IntegratorParams(std::map<std::string, std::string>{{"shift", "manifold"}}));
 }
 
 // Merges and connections are counted; the caustics box's photons from the glass sphere (a delta
@@ -119,8 +127,9 @@ TEST(Gvcm, MergesConnectionsAndFailuresAreCounted) {
 
 TEST(Gvcm, ParametersAreChecked) {
   using Values = std::map<std::string, std::string>;
-  EXPECT_THROW(gvcm_settings(IntegratorParams(Values{{"shift", "manifold"}})), Error);
+  EXPECT_THROW(gvcm_settings(IntegratorParams(Values{{"shift", "bent"}})), Error);
   EXPECT_EQ(gvcm_settings(IntegratorParams(Values{{"shift", "replay"}})).shift, GPT_SHIFT_REPLAY);
+  EXPECT_EQ(gvcm_settings(IntegratorParams(Values{{"shift", "manifold"}})).shift, GPT_SHIFT_MANIFOLD);
   EXPECT_THROW(gvcm_photon_settings(IntegratorParams(Values{{"radius", "0"}})), Error);
   EXPECT_EQ(gvcm_photon_settings(IntegratorParams{}).options.mis, BIDIR_MIS_BALANCE);
 }

@@ -2,8 +2,9 @@
 // scene (glass, mirrors, rough metals, an environment map with a sun) and beside a delta light with
 // a degenerate emitter (a zero-area triangle and a point light: gbdpt's and gvcm's offsets'
 // connections end on both, gpm's and gvcm's photons and gbdpt's light-traced vertices are shifted
-// from both; gbdpt also with the manifold shift): every pixel of every layer finite, no sample
-// rejected as NaN or Inf, something rendered, connections, merges or light-tracing offsets made. Renders of 24 pixels wide, 4
+// from both; gbdpt and gvcm also with the manifold shift): every pixel of every layer finite, no
+// sample rejected as NaN or Inf, something rendered, connections, merges or light-tracing offsets
+// made. Renders of 24 pixels wide, 4
 // samples a pixel, seed 404, on a context of their own with stats.
 #include <gtest/gtest.h>
 
@@ -82,6 +83,14 @@ TEST(GpmStability, ZeroAreaLightAndPointLight) {
 TEST(GvcmStability, ProjectScenesAreFinite) {
   int scenes = for_each_project_scene(24, [](const std::string& path, const Scene& scene) {
     expect_stable("gvcm", "gpm/merges", scene, scene.max_depth > 0 ? scene.max_depth : 16, path);
+  });
+  EXPECT_GE(scenes, 5);
+}
+
+TEST(GvcmStability, ProjectScenesAreFiniteWithManifoldShift) {
+  const IntegratorParams manifold(std::map<std::string, std::string>{{"shift", "manifold"}});
+  int scenes = for_each_project_scene(24, [&](const std::string& path, const Scene& scene) {
+    expect_stable("gvcm", "gpm/merges", scene, scene.max_depth > 0 ? scene.max_depth : 16, path, manifold);
   });
   EXPECT_GE(scenes, 5);
 }
