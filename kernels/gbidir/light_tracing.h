@@ -107,14 +107,6 @@ inline int lt_offset(const SceneData* s, const GdrCamera* cam, const GdrBidirOpt
   float2 pdfs;
   if (!photon_shift_eval(s, pa, sx->p, sx->ng, vload3(0, x->throughput), sy, &phi2, &ratio, &pdfs)) return 0;
   float3 wo = photon_toward_parent(pa, sy->p), wc = -py.dir;
-  if (pa->kind == GPM_PARENT_INFINITE) {
-    // Parallel light: the hit's area density and f both carry the arrival cosine (photon_shift_eval
-    // leaves them to the photon's own translation).
-    float c = fabs(dot(sx->ng, wo)), c2 = fabs(dot(sy->ng, wo));
-    float scale = c > 0.0f ? c2 / c : 0.0f;
-    phi2 *= scale;
-    ratio *= scale;
-  }
   float pc_x = lt_camera_density(cam, &px, sx->ng), pc_y = lt_camera_density(cam, &py, sy->ng);
   float jac = pc_y > 0.0f ? pc_x / pc_y : 0.0f;
   Bsdf by = surface_bsdf(s, sy);

@@ -10,8 +10,9 @@
 //   throughput: F(w') / F(w) * G(p, y') / G(p, y),   density: pdf(w') G(p, y') / (pdf(w) G(p, y)),
 // with F the parent's scattering (or emission) times its cosine, G(p, q) = |cos at q| / |q - p|^2
 // (the measure of the photon's surface seen from p) and w, w' the directions from p. A light at
-// infinity sends the photon along the same direction from a point of its disc moved with it (a
-// translation: throughput and density unchanged); the ray then comes from outside the scene. A
+// infinity sends the photon along the same direction from a point of its disc moved with it, the
+// ray coming from outside the scene: its G is the cosine at the photon alone (F and pdf are the
+// same for both). A
 // parent on a delta surface (the manifold walk the reference takes there is not done) refuses the
 // shift.
 #pragma once
@@ -151,10 +152,13 @@ inline int photon_shift_eval(const SceneData* s, const PhotonParent* pa, float3 
   Frame f2 = frame_from_normal(sy2->ns);
   if (bsdf_is_delta(&by2) || !sides_agree(-w2, sy2->ng, frame_to_local(&f2, -w2).z)) return 0;
   if (pa->kind == GPM_PARENT_INFINITE) {
-    *phi2 = phi;
-    *ratio = 1.0f;
+    // Parallel light: the photon's area density from the light's disc, and what arrives per area,
+    // go with the cosine at the surface (G(p, q) without its distance).
+    float c = fabs(dot(ny, pa->wo)), c2 = fabs(dot(sy2->ng, pa->wo));
+    *ratio = c > 0.0f ? c2 / c : 0.0f;
+    *phi2 = phi * *ratio;
     *pdfs = (float2)(1.0f);
-    return 1;
+    return *ratio > 0.0f && isfinite(*ratio);
   }
   float3 w = normalize(py - pa->p);
   float pdf, pdf2;
