@@ -138,7 +138,7 @@ struct LightBatch {
     rs.max_depth = 8;
     p = in.device_scene.path_params(rs, 0, 0, count);
     o = technique == BIDIR_VCM ? merging_pass_options(gvcm_photon_settings({}), scene, 0, count)
-                               : GdrBidirOptions{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
+                               : gbdpt_light_options();
     Buffer<Vec4> values(in.context, count);
     SplatFilm splats(in.context, subpaths.kernels(), BidirSubpaths::kProgram, count);
     subpaths.trace_light(p, o, BidirSink{values, splats});

@@ -1,22 +1,17 @@
 #include "integrators/gbidir/gradient_bidirectional.h"
 
 namespace gdr {
-namespace {
 
-// The light subpaths' options: bdpt's store and connections to the camera, the balance heuristic
-// (the options the kernels weigh the camera subpaths by: gbidir/weights.h, gbdpt_options).
-GdrBidirOptions light_options() {
+GdrBidirOptions gbdpt_light_options() {
   GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
   return o;
 }
 
-}  // namespace
-
 const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
                                                "manifold_tolerance", "manifold_precision"};
-const std::vector<std::string> kGvcmParams = {"shift",          "shift_threshold",    "aux",
-                                              "manifold_iterations", "manifold_tolerance", "manifold_precision",
-                                              "radius",         "radius_alpha"};
+const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
+                                              "manifold_tolerance", "manifold_precision", "radius",
+                                              "radius_alpha"};
 
 GptSettings gbdpt_settings(const IntegratorParams& params) { return gpt_settings(params); }
 GptSettings gvcm_settings(const IntegratorParams& params) { return gpt_settings(params); }
@@ -41,7 +36,8 @@ void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t
                                         uint32_t count) {
   GdrGptParams p = groups_.params(settings, sample, first, count);
   p.path.max_depth = bdpt_segments(settings.max_depth);
-  const GdrBidirOptions o = merging_ ? merging_pass_options(*merging_, in_.scene, sample, count) : light_options();
+  const GdrBidirOptions o =
+      merging_ ? merging_pass_options(*merging_, in_.scene, sample, count) : gbdpt_light_options();
   // The camera subpaths' sums take the light subpaths' merging factors (kernels/gbidir/weights.h).
   p.vm_factor = o.vm_factor;
   p.vc_factor = o.vc_factor;

@@ -50,6 +50,9 @@ GptSettings gbdpt_settings(const IntegratorParams& params);
 GptSettings gvcm_settings(const IntegratorParams& params);
 // gvcm's light subpaths and radius schedule: vcm's, under the balance heuristic.
 BidirSettings gvcm_photon_settings(const IntegratorParams& params);
+// gbdpt's light subpaths: bdpt's store and connections to the camera, the balance heuristic (the
+// options the kernels weigh the camera subpaths by: kernels/gbidir/weights.h, gbdpt_options).
+GdrBidirOptions gbdpt_light_options();
 
 class GradientBidirectional : public GradientPathTracer {
  public:
