@@ -33,7 +33,8 @@ std::vector<IntegratorEntry> make_registry() {
          return std::make_unique<GradientPathTracer>(in, gpt_settings(p), p);
        }},
       {"gbdpt", "gradient-domain bidirectional path tracing (Manzi et al. 2015): G-PT's shifted camera subpaths "
-                "connected to one light subpath each, Poisson reconstruction",
+                "connected to one light subpath each, light tracing shifted from its splat pixel, Poisson "
+                "reconstruction",
        true, join(kGbdptParams, kReconParams), {"gbdpt"},
        [](const RenderInputs& in, const IntegratorParams& p) -> std::unique_ptr<Integrator> {
          return std::make_unique<GradientBidirectional>(in, gbdpt_settings(p), p);
