@@ -173,7 +173,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
       ->check(kFinitePositive);
   param("--shift", "shift",
         "shift mapping: hybrid (default; gmlt: manifold) | replay | manifold (hybrid, with manifold walks across specular chains "
-        "between rough vertices; gpt and gmlt only)")
+        "between rough vertices; not gpm)")
       ->check(CLI::IsMember({"hybrid", "replay", "manifold"}));
   param("--manifold-iterations", "manifold_iterations", "Newton iterations per manifold walk (default 20)")
       ->check(CLI::Range(1, 1000));
