@@ -28,6 +28,7 @@
 #include "path/spawn.h"
 #include "path/nee.h"
 #include "path/splat.h"
+#include "bidir/camera_connection.h"
 #include "bidir/connection.h"
 #include "bidir/photon_query.h"
 #include "bidir/strategies.h"
@@ -205,16 +206,9 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   CameraProjection pr;
   if ((connects || opts.technique == BIDIR_LT) && segments_allowed(params.max_depth, k + 1) && !delta &&
       bidir_strategy_shown(&st, k + 1, 1) && camera_project(&cam, su.p, &pr)) {
-    float3 wc = -pr.dir, wc_local = frame_to_local(&frame, wc);
-    float3 f = bsdf_eval_transport(&b, wo_local, wc_local, TRANSPORT_IMPORTANCE) *
-               shading_normal_correction(wo, wc, su.ng, wo_local.z, wc_local.z);
-    float w = 1.0f;
-    if (connects) {
-      float pdf_camera = camera_pdf_dir(&cam, pr.cos_theta) * fabs(dot(su.ng, wc)) / (pr.dist * pr.dist);
-      float pdf_rev = bsdf_pdf(&b, wc_local, wo_local);
-      w = bidir_weight(&opts, mis_weight(mis_side(pdf_camera, st.dvcm, st.dvc, pdf_rev, &opts)));
-    }
-    float3 c = beta * f * (w * pr.cos_theta * camera_we(&cam, pr.cos_theta) / (pr.dist * pr.dist));
+    float scale;
+    float3 f = camera_connection(&cam, &pr, &b, &frame, su.ng, wo, st.dvcm, st.dvc, &opts, connects, &scale);
+    float3 c = beta * f * scale;
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
       splat_write(&splats[slot], pr.raster, c);
       seen[slot] = bidir_vertex(&rh.hit, wo, beta, &st, k);

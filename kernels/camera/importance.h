@@ -100,6 +100,12 @@ inline float camera_pdf_dir(const GdrCamera* cam, float cos_theta) {
   return 1.0f / (camera_image_area(cam) * cos_theta * cos_theta * cos_theta);
 }
 
+// The camera's area density at a surface point (geometric normal ng) it sees as pr: the
+// direction's pdf times the solid angle a unit of that surface subtends.
+inline float camera_pdf_area(const GdrCamera* cam, const CameraProjection* pr, float3 ng) {
+  return camera_pdf_dir(cam, pr->cos_theta) * fabs(dot(ng, pr->dir)) / (pr->dist * pr->dist);
+}
+
 // One axis of a pixel's normalized filter: for pixel p of an axis of `size` pixels at film
 // coordinate `raster`, the filter's value at the offset from the pixel's centre over its mass on
 // the offsets the pixel samples (filter_range); 0 outside them. `full_mass`: the filter's mass

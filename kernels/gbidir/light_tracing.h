@@ -30,6 +30,7 @@
 //                            gather;
 // and at the end of the pass gbdpt_add_light_tracing adds the layers into the accumulators.
 #pragma once
+#include "bidir/camera_connection.h"
 #include "bidir/subpath_mis.h"
 #include "camera/importance.h"
 #include "gbidir/photon_shift.h"
@@ -88,11 +89,6 @@ __kernel void gbdpt_lt_offset_rays(GdrGptParams params, uint count, uint stride,
   }
 }
 
-// The camera's area density at surface point p (geometric normal ng) it projects to as pr.
-inline float lt_camera_density(const GdrCamera* cam, const CameraProjection* pr, float3 ng) {
-  return camera_pdf_dir(cam, pr->cos_theta) * fabs(dot(ng, pr->dir)) / (pr->dist * pr->dist);
-}
-
 // The value (f(y)|J|/p(x) w_lt(y)) and R of offset y1 (surface sy) of light vertex x (surface sx)
 // whose parent is pa; 0 where it cannot be formed. *yv: y1 as the light subpath's vertex (its
 // throughput f/p of the light path up to it, its direction toward the parent and its MIS sums;
@@ -106,20 +102,18 @@ inline int lt_offset(const SceneData* s, const GdrCamera* cam, const GdrBidirOpt
   float ratio;
   float2 pdfs;
   if (!photon_shift_eval(s, pa, sx->p, sx->ng, vload3(0, x->throughput), sy, &phi2, &ratio, &pdfs)) return 0;
-  float3 wo = photon_toward_parent(pa, sy->p), wc = -py.dir;
-  float pc_x = lt_camera_density(cam, &px, sx->ng), pc_y = lt_camera_density(cam, &py, sy->ng);
-  float jac = pc_y > 0.0f ? pc_x / pc_y : 0.0f;
-  Bsdf by = surface_bsdf(s, sy);
-  Frame fy = frame_from_normal(sy->ns);
-  float3 wo_l = frame_to_local(&fy, wo), wc_l = frame_to_local(&fy, wc);
-  float3 f = bsdf_eval_transport(&by, wo_l, wc_l, TRANSPORT_IMPORTANCE) *
-             shading_normal_correction(wo, wc, sy->ng, wo_l.z, wc_l.z);
+  float3 wo = photon_toward_parent(pa, sy->p);
+  float pc_y = camera_pdf_area(cam, &py, sy->ng);
+  float jac = pc_y > 0.0f ? camera_pdf_area(cam, &px, sx->ng) / pc_y : 0.0f;
   *yv = *x;
   photon_shift_sums(pa, x, sx->p, sx->ng, sy, pdfs, o, &yv->dvcm, &yv->dvc, &yv->dvm);
   vstore3(wo, 0, yv->wo);
   vstore3(ratio > 0.0f ? phi2 / ratio : (float3)(0.0f), 0, yv->throughput);
-  float w = bidir_weight(o, mis_weight(mis_side(pc_y, yv->dvcm, yv->dvc, bsdf_pdf(&by, wc_l, wo_l), o)));
-  *value = phi2 * f * (w * jac * py.cos_theta * camera_we(cam, py.cos_theta) / (py.dist * py.dist));
+  Bsdf by = surface_bsdf(s, sy);
+  Frame fy = frame_from_normal(sy->ns);
+  float scale;
+  float3 f = camera_connection(cam, &py, &by, &fy, sy->ng, wo, yv->dvcm, yv->dvc, o, 1, &scale);
+  *value = phi2 * f * (scale * jac);
   *r = ratio * jac;
   return max3(*value) > 0.0f && is_finite3(*value) && *r > 0.0f && isfinite(*r);
 }

@@ -30,20 +30,25 @@
 // camera subpath there, so no half vector is copied beyond it).
 inline int merge_own_point(int state) { return state == GBDPT_OFFSET_OWN || state == GBDPT_OFFSET_GLOSSY; }
 
-// The "others" of a merge at camera vertex z (BSDF b, frame f, local direction wo_l toward its
-// subpath) of a photon arriving from wi with sums y_dvcm, y_dvm: G-VCM's, from both sides' sums,
-// without and with light tracing's share (z's all_dvcm, all_dvm); G-PM merges by one strategy.
+// G-VCM's weights of a merge at camera vertex z (BSDF b, frame f, local direction wo_l toward its
+// subpath) of a photon arriving from wi: the BSDF's pdfs toward the photon and back (MERGE_PDFS),
+// then the "others" from both sides' sums, the photon's y_dvcm and y_dvm and z's without and with
+// light tracing's share (z's all_dvcm, all_dvm; MERGE_OTHERS). G-PM merges by one strategy.
 #if defined(GDR_GVCM)
-inline float2 gvcm_merge_others(const Bsdf* b, const Frame* f, float3 wo_l, float3 wi, float y_dvcm, float y_dvm,
-                                const GdrBidirVertex* z, float all_dvcm, float all_dvm, const GdrBidirOptions* o) {
+inline float2 gvcm_merge_pdfs(const Bsdf* b, const Frame* f, float3 wo_l, float3 wi) {
   float3 wi_l = frame_to_local(f, wi);
-  float pdf_fwd = bsdf_pdf(b, wo_l, wi_l), pdf_rev = bsdf_pdf(b, wi_l, wo_l);
-  float light = mis_merge_side(y_dvcm, y_dvm, pdf_fwd, o);
-  return (float2)(light + mis_merge_side(z->dvcm, z->dvm, pdf_rev, o),
-                  light + mis_merge_side(all_dvcm, all_dvm, pdf_rev, o));
+  return (float2)(bsdf_pdf(b, wo_l, wi_l), bsdf_pdf(b, wi_l, wo_l));
 }
+inline float2 gvcm_merge_others(float2 pdfs, float y_dvcm, float y_dvm, const GdrBidirVertex* z, float all_dvcm,
+                                float all_dvm, const GdrBidirOptions* o) {
+  float light = mis_merge_side(y_dvcm, y_dvm, pdfs.x, o);
+  return (float2)(light + mis_merge_side(z->dvcm, z->dvm, pdfs.y, o),
+                  light + mis_merge_side(all_dvcm, all_dvm, pdfs.y, o));
+}
+#define MERGE_PDFS(...) gvcm_merge_pdfs(__VA_ARGS__)
 #define MERGE_OTHERS(...) gvcm_merge_others(__VA_ARGS__)
 #else
+#define MERGE_PDFS(...) ((float2)(0.0f))
 #define MERGE_OTHERS(...) ((float2)(0.0f))
 #endif
 
@@ -145,7 +150,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   Bsdf bo[GPT_OFFSETS];
   Frame fo[GPT_OFFSETS];
   float3 wo_o[GPT_OFFSETS];
-  int own[GPT_OFFSETS], shared[GPT_OFFSETS], opened = 0;
+  // same[k]: offset k shares the base's point and direction, so its merges are the base's.
+  int own[GPT_OFFSETS], shared[GPT_OFFSETS], same[GPT_OFFSETS], opened = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     own[k] = merge_own_point(rec.state[k]);
     shared[k] = rec.state[k] == GBDPT_OFFSET_SHARED;
@@ -163,6 +169,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       }
     }
     if (own[k] || shared[k]) wo_o[k] = frame_to_local(&fo[k], vload3(0, rec.offset[k].wo));
+    same[k] = shared[k] && all(wo_o[k] == wo_x);
     opened += own[k];
   }
   float3 sum_base[GPT_OFFSETS], sum_off[GPT_OFFSETS];
@@ -177,10 +184,12 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
     uint r0 = r;
     r += GPT_OFFSETS;
     float3 phi = vload3(0, y.throughput), wi = vload3(0, y.wo);
-    float3 cb = beta * photon_merge_value(&bx, &fx, sx.ng, wo_x, wi) * phi;
+    float3 mv = photon_merge_value(&bx, &fx, sx.ng, wo_x, wi);
+    float3 cb = beta * mv * phi;
     if (!(max3(cb) > 0.0f)) continue;
     ++merged;
-    float2 ox = MERGE_OTHERS(&bx, &fx, wo_x, wi, y.dvcm, y.dvm, &rec.base, rec.all_dvcm[0], rec.all_dvm[0], &mo);
+    float2 pdfs = MERGE_PDFS(&bx, &fx, wo_x, wi);
+    float2 ox = MERGE_OTHERS(pdfs, y.dvcm, y.dvm, &rec.base, rec.all_dvcm[0], rec.all_dvm[0], &mo);
     // The photon's parent and surface, where some offset can take it shifted.
     PhotonParent pa;
     pa.kind = GPM_PARENT_NONE;
@@ -197,14 +206,15 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       float ratio = 0.0f;
       float2 oy = (float2)(0.0f);
       if (shared[k]) {
-        // At the base's point: the same photon.
-        co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
-             photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi) * phi;
+        // At the base's point: the same photon (and, from the base's direction, the base's BSDF
+        // values and pdfs).
+        float3 mv_k = same[k] ? mv : photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi);
+        co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization * mv_k * phi;
         formed = max3(co) > 0.0f;
         ratio = rec.ratio[k];
         if (formed) {
-          oy = MERGE_OTHERS(&bo[k], &fo[k], wo_o[k], wi, y.dvcm, y.dvm, &rec.offset[k], rec.all_dvcm[1 + k],
-                            rec.all_dvm[1 + k], &mo);
+          float2 pdfs_k = same[k] ? pdfs : MERGE_PDFS(&bo[k], &fo[k], wo_o[k], wi);
+          oy = MERGE_OTHERS(pdfs_k, y.dvcm, y.dvm, &rec.offset[k], rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
         }
       } else if (own[k] && pa.kind != GPM_PARENT_NONE) {
         GdrRayHit h;
@@ -226,8 +236,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
             if (formed) {
               float y2_dvcm, y2_dvc, y2_dvm;
               photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, parent_pdfs, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
-              oy = MERGE_OTHERS(&bo[k], &fo[k], wo_o[k], wi2, y2_dvcm, y2_dvm, &rec.offset[k], rec.all_dvcm[1 + k],
-                                rec.all_dvm[1 + k], &mo);
+              oy = MERGE_OTHERS(MERGE_PDFS(&bo[k], &fo[k], wo_o[k], wi2), y2_dvcm, y2_dvm, &rec.offset[k],
+                                rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
             }
 #endif
           }

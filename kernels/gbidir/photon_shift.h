@@ -12,9 +12,8 @@
 // (the measure of the photon's surface seen from p) and w, w' the directions from p. A light at
 // infinity sends the photon along the same direction from a point of its disc moved with it, the
 // ray coming from outside the scene: its G is the cosine at the photon alone (F and pdf are the
-// same for both). A
-// parent on a delta surface (the manifold walk the reference takes there is not done) refuses the
-// shift.
+// same for both). A parent on a delta surface (the manifold walk the reference takes there is not
+// done) refuses the shift.
 #pragma once
 #include "bidir/subpath_mis.h"
 #include "bsdf/transport.h"

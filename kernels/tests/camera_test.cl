@@ -57,3 +57,39 @@ __kernel void camera_filter_values(int filter, float r, uint n, __global const f
   uint i = get_global_id(0);
   if (i < n) out[i] = filter_eval(filter, r, t[i]);
 }
+
+// The area density by finite differences: for in[2 i] = (film x, film y, distance along the ray)
+// and in[2 i + 1] = a surface normal there, out[i] = (camera_pdf_area at the point; the film area,
+// in pixels, that a small square of the surface about the point projects to, over the square's
+// area). The two agree up to one factor, the film's pixels per unit of the image's area.
+__kernel void camera_pdf_area_fd(__global const GdrCamera* camera, uint count, __global const float4* in,
+                                 __global float2* out) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  GdrCamera cam = *camera;
+  float3 o, d;
+  float tnear, tfar;
+  camera_ray(&cam, in[2 * i].x, in[2 * i].y, &o, &d, &tnear, &tfar);
+  float3 p = o + in[2 * i].z * d, n = normalize(in[2 * i + 1].xyz);
+  CameraProjection pr;
+  out[i] = (float2)(0.0f);
+  // Grazing squares (their film area a small difference of large terms) are left out.
+  if (!camera_project(&cam, p, &pr) || fabs(dot(n, pr.dir)) < 0.3f) return;
+  Frame f = frame_from_normal(n);
+  float h = 1e-3f * pr.dist;
+  float2 c[4];
+  for (int k = 0; k < 4; ++k) {
+    float3 q = p + f.s * (k == 1 || k == 2 ? h : -h) + f.t * (k >= 2 ? h : -h);
+    CameraProjection pq;
+    if (!camera_project(&cam, q, &pq)) return;
+    c[k] = pq.raster;
+  }
+  // The film quad's area (shoelace, about its first corner: the corners lie a fraction of a pixel
+  // apart), over the square's 4 h^2.
+  float a = 0.0f;
+  for (int k = 1; k < 3; ++k) {
+    float2 e = c[k] - c[0], e2 = c[k + 1] - c[0];
+    a += e.x * e2.y - e2.x * e.y;
+  }
+  out[i] = (float2)(camera_pdf_area(&cam, &pr, n), 0.5f * fabs(a) / (4.0f * h * h));
+}

@@ -47,51 +47,12 @@ __kernel void lt_offset_round_trip(GdrPtParams params, GdrBidirOptions opts, uin
   // x's own light-tracing value, as bidir_light_shade splats it.
   Bsdf b = surface_bsdf(&s, &sx);
   Frame f = frame_from_normal(sx.ns);
-  float3 wo = vload3(0, x.wo), wc = -pr.dir, wo_l = frame_to_local(&f, wo), wc_l = frame_to_local(&f, wc);
-  float3 fx = bsdf_eval_transport(&b, wo_l, wc_l, TRANSPORT_IMPORTANCE) *
-              shading_normal_correction(wo, wc, sx.ng, wo_l.z, wc_l.z);
-  float w = bidir_weight(&opts, mis_weight(mis_side(lt_camera_density(&cam, &pr, sx.ng), x.dvcm, x.dvc,
-                                                    bsdf_pdf(&b, wc_l, wo_l), &opts)));
-  float3 c = vload3(0, x.throughput) * fx * (w * pr.cos_theta * camera_we(&cam, pr.cos_theta) / (pr.dist * pr.dist));
+  float scale;
+  float3 fx = camera_connection(&cam, &pr, &b, &f, sx.ng, vload3(0, x.wo), x.dvcm, x.dvc, &opts, 1, &scale);
+  float3 c = vload3(0, x.throughput) * fx * scale;
   float expect = (c.x + c.y + c.z) * r2;
   if (!(expect > 0.0f)) return;
   kind[e] = pa.kind;
   out[e] = (float4)(r * r2, (v2.x + v2.y + v2.z) / expect, 0.0f, 0.0f);
 }
 
-// The film shift's Jacobian by finite differences: for in[2 i] = (film x, film y, distance along the
-// ray) and in[2 i + 1] = a surface normal there, out[i] = (the camera's area density at the point,
-// lt_camera_density; the film area, in pixels, that a small square of the surface about the point
-// projects to, over the square's area). The Jacobian pc(x) / pc(y) of light tracing's shift holds
-// where the two agree up to one factor for every point (pixels per unit of the image's area).
-__kernel void lt_camera_density_fd(__global const GdrCamera* camera, uint count, __global const float4* in,
-                                   __global float2* out) {
-  uint i = get_global_id(0);
-  if (i >= count) return;
-  GdrCamera cam = *camera;
-  float3 o, d;
-  float tnear, tfar;
-  camera_ray(&cam, in[2 * i].x, in[2 * i].y, &o, &d, &tnear, &tfar);
-  float3 p = o + in[2 * i].z * d, n = normalize(in[2 * i + 1].xyz);
-  CameraProjection pr;
-  out[i] = (float2)(0.0f);
-  // Grazing squares (their film area a small difference of large terms) are left out.
-  if (!camera_project(&cam, p, &pr) || fabs(dot(n, pr.dir)) < 0.3f) return;
-  Frame f = frame_from_normal(n);
-  float h = 1e-3f * pr.dist;
-  float2 c[4];
-  for (int k = 0; k < 4; ++k) {
-    float3 q = p + f.s * (k == 1 || k == 2 ? h : -h) + f.t * (k >= 2 ? h : -h);
-    CameraProjection pq;
-    if (!camera_project(&cam, q, &pq)) return;
-    c[k] = pq.raster;
-  }
-  // The film quad's area (shoelace, about its first corner: the corners lie a fraction of a pixel
-  // apart), over the square's 4 h^2.
-  float a = 0.0f;
-  for (int k = 1; k < 3; ++k) {
-    float2 e = c[k] - c[0], e2 = c[k + 1] - c[0];
-    a += e.x * e2.y - e2.x * e.y;
-  }
-  out[i] = (float2)(lt_camera_density(&cam, &pr, n), 0.5f * fabs(a) / (4.0f * h * h));
-}

@@ -16,9 +16,12 @@ namespace {
 constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
 constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
 
+// G-BDPT's and G-VCM's groups connect to light subpaths.
+bool connects(GroupKind kind) { return kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging; }
+
 Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, GroupKind kind) {
   Defines d = gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
-  if (kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging) d["GDR_GBDPT"] = "1";
+  if (connects(kind)) d["GDR_GBDPT"] = "1";
   if (kind == GroupKind::kConnectingMerging) d["GDR_GVCM"] = "1";
   if (kind == GroupKind::kMerging) d["GDR_GPM"] = "1";
   return d;
@@ -84,9 +87,7 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
     manifold_.emplace(in, kernels_, program(), capacity_ * GPT_OFFSETS, gpt.manifold);
     join_.emplace(kernels_.make(program(), "gpt_manifold_join"));
   }
-  if (kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging) {
-    connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
-  }
+  if (connects(kind)) connect_.emplace(kernels_.make(program(), "gbdpt_connect"));
   if (gpt.shift == GPT_SHIFT_MANIFOLD) log::verbose(manifold_description(in.scene, in.context.device(), gpt.manifold));
 }
 
