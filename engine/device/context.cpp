@@ -132,6 +132,7 @@ std::shared_ptr<Program> Context::program(const std::string& root, const Defines
       throw DeviceError("building kernels/" + root + " (" + options + ") on " + device_.name +
                         " failed:\n" + build_log);
     }
+    if (build_log.find("warning") != std::string::npos) log::verbose("kernels/", root, ": ", build_log);
     if (stats_) stats_->add_count("kernel_cache/misses");
     cache.store(program);
   }

@@ -11,13 +11,17 @@
 #include "path/camera_sample.h"
 #include "path/path_state.h"
 #include "path/shadow.h"
+#include "wavefront/counter_shard.h"
+#include "wavefront/group_reserve.h"
 
-__kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params, __global GdrRayHit* base_rays,
-                           __global GdrRayHit* offset_rays, __global GptBaseState* bases,
-                           __global GptOffsetState* offsets, __global GptChain* chains, __global float4* acc,
-                           __global uint* counters, PRIMARY_SAMPLE_ARGS) {
-  uint g = get_global_id(0);
-  if (g >= params.path.pixel_count) return;
+// Group g's base and offsets, up to the offsets' camera rays (traced[k], rays[k]; *count of them).
+__attribute__((always_inline)) inline void gpt_generate_group(__global const GdrCamera* camera, GdrGptParams params,
+                                                              uint g, __global GdrRayHit* base_rays,
+                                                              __global GptBaseState* bases,
+                                                              __global GptOffsetState* offsets,
+                                                              __global GptChain* chains, __global float4* acc,
+                                                              __global uint* stats, CameraRay* rays, int* traced,
+                                                              uint* count, PRIMARY_SAMPLE_ARGS) {
   GdrCamera cam = *camera;
   uint pixel = params.path.first_pixel + g;
   PathSampler ps = path_sampler_bound(params.path.seed, pixel, params.path.sample, PRIMARY_SAMPLE_NAMES);
@@ -40,13 +44,8 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
   chains[g].open = 0;
 #endif
   for (int j = 0; j < GPT_ACC_COUNT; ++j) acc[pixel * GPT_ACC_COUNT + j] = (float4)(0.0f);
-  // The offsets' camera rays, queued with one atomic for the group (four on one counter from every
-  // work item would serialize them).
-  CameraRay rays[GPT_OFFSETS];
-  int traced[GPT_OFFSETS], count = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     GptOffsetState os;
-    traced[k] = 0;
     os.throughput[0] = os.throughput[1] = os.throughput[2] = 1.0f;
     os.ratio = 1.0f;
 #if defined(GDR_GBDPT)
@@ -69,7 +68,7 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
     }
     if (!(q > 0.0f) || !isfinite(q)) {
       // The neighbour is outside the image, or its film sample could not be here.
-      kill_offset(&os, counters, GPT_COUNTER_FAIL_OUTSIDE);
+      kill_offset(&os, stats, GPT_COUNTER_FAIL_OUTSIDE);
     } else {
       CameraRay ro = camera_sample(&cam, nx, ny, jitter);
       os.mode = GPT_MODE_TRACE;
@@ -81,12 +80,30 @@ __kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params
 #endif
       rays[k] = ro;
       traced[k] = 1;
-      ++count;
+      ++*count;
     }
     offsets[g * GPT_OFFSETS + k] = os;
   }
-  if (count == 0) return;
-  uint slot = atomic_add(&counters[GPT_COUNTER_OFFSET_RAYS], (uint)count);
+}
+
+// The groups' camera rays; each work-group appends its offsets' rays together (group_reserve).
+__kernel void gpt_generate(__global const GdrCamera* camera, GdrGptParams params, __global GdrRayHit* base_rays,
+                           __global GdrRayHit* offset_rays, __global GptBaseState* bases,
+                           __global GptOffsetState* offsets, __global GptChain* chains, __global float4* acc,
+                           __global uint* counters, PRIMARY_SAMPLE_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint g = get_global_id(0);
+  CameraRay rays[GPT_OFFSETS];
+  int traced[GPT_OFFSETS];
+  uint count = 0u;
+  for (int k = 0; k < GPT_OFFSETS; ++k) traced[k] = 0;
+  if (g < params.path.pixel_count) {
+    gpt_generate_group(camera, params, g, base_rays, bases, offsets, chains, acc, counter_shard(counters), rays, traced,
+                       &count, PRIMARY_SAMPLE_NAMES);
+  }
+  const uint which[1] = {GPT_COUNTER_OFFSET_RAYS};
+  uint slot = count;
+  group_reserve(scratch, counters, which, 1, &slot);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     if (traced[k]) write_camera_ray(&offset_rays[slot++], &rays[k], g * GPT_OFFSETS + (uint)k);
   }

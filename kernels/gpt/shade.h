@@ -19,6 +19,8 @@
 #include "shared/gbidir_types.h"
 #include "shift/joined.h"
 #include "shift/policy.h"
+#include "wavefront/counter_shard.h"
+#include "wavefront/group_reserve.h"
 #include "gbidir/camera_vertex.h"
 #include "gbidir/weights.h"
 
@@ -54,15 +56,32 @@ inline void add_pair(__global float4* acc, uint pixel, int k, float2 w, float3 c
   acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(w.y * c_off, nonfinite));
 }
 
-__kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
-                        __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
-                        __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
-                        __global GbdptCameraVertex* records, __global uint* connectable, __global uint* counters,
-                        PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
-  uint q = get_global_id(0);
-  if (q >= count || path_no_segments(params.path.max_depth)) return;
+// What a group's shade step appends to the queues: its shadow rays (the offsets' own, then the
+// base's), its record's entry in the connectable list, the base's next ray.
+typedef struct {
+  float3 shadow_p[GPT_OFFSETS + 1], shadow_ng[GPT_OFFSETS + 1], shadow_wi[GPT_OFFSETS + 1];
+  float shadow_dist[GPT_OFFSETS + 1];
+  uint shadow_id[GPT_OFFSETS + 1];
+  uint shadows, connectable, next;
+  float3 next_p, next_ng, next_wi;
+} GptShadeAppend;
+
+inline void shade_append_shadow(GptShadeAppend* out, float3 p, float3 ng, const LightSample* ls, uint id) {
+  uint j = out->shadows++;
+  out->shadow_p[j] = p;
+  out->shadow_ng[j] = ng;
+  out->shadow_wi[j] = ls->wi;
+  out->shadow_dist[j] = ls->dist;
+  out->shadow_id[j] = id;
+}
+
+// Group g's step (the queue's entry q), up to what it appends (*out); its counts go to `stats`.
+__attribute__((always_inline)) inline void gpt_shade_group(
+    GdrGptParams params, uint q, __global const GdrRayHit* base_in, __global GptBaseState* bases,
+    __global GptOffsetState* offsets, __global float4* acc, __global float4* pend, __global GbdptCameraVertex* records,
+    __global uint* stats, GptShadeAppend* out, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
-  __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
+  __global uint* nonfinite = &stats[GPT_COUNTER_NONFINITE];
   GdrRayHit rh = base_in[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];
@@ -79,10 +98,10 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   // Outcomes of the last shift step: where each offset got to.
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     if (o[k].mode == GPT_MODE_TRACE && (o[k].prim != GDR_INVALID_ID) != base_hit) {
-      kill_offset(&o[k], counters, GPT_COUNTER_FAIL_ENVIRONMENT);
+      kill_offset(&o[k], stats, GPT_COUNTER_FAIL_ENVIRONMENT);
     } else if (o[k].mode == GPT_MODE_RECONNECTING) {
       if (o[k].visible) o[k].mode = GPT_MODE_JOINED_RECENT;
-      else kill_offset(&o[k], counters, GPT_COUNTER_FAIL_OCCLUDED);
+      else kill_offset(&o[k], stats, GPT_COUNTER_FAIL_OCCLUDED);
     }
   }
 
@@ -139,7 +158,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
       if (o[k].glossy_next_only) {
         Bsdf bo = surface_bsdf(&s, &so[k]);
         if (!shift_reverses_at(&bo, params.shift_threshold)) {
-          kill_offset(&o[k], counters, GPT_COUNTER_FAIL_NOT_INVERTIBLE);
+          kill_offset(&o[k], stats, GPT_COUNTER_FAIL_NOT_INVERTIBLE);
         }
       }
     } else if (o[k].mode == GPT_MODE_JOINED_RECENT) {
@@ -281,16 +300,10 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
         base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
       }
     }
-    // The group's shadow rays, queued with one atomic (one per ray from every work item would
-    // serialize them on the counter).
-    uint n = (uint)(own_rays + base_ray_needed);
-    uint r = n ? atomic_add(&counters[GPT_COUNTER_SHADOW_RAYS], n) : 0u;
     for (int k = 0; k < GPT_OFFSETS; ++k) {
-      if (own_ray_of[k]) {
-        write_light_ray(&shadow_rays[r++], so[k].p, so[k].ng, lights[k].wi, lights[k].dist, GPT_SHADOW_ID(g, 1 + k));
-      }
+      if (own_ray_of[k]) shade_append_shadow(out, so[k].p, so[k].ng, &lights[k], GPT_SHADOW_ID(g, 1 + k));
     }
-    if (base_ray_needed) write_light_ray(&shadow_rays[r], su.p, su.ng, ls.wi, ls.dist, GPT_SHADOW_ID(g, 0));
+    if (base_ray_needed) shade_append_shadow(out, su.p, su.ng, &ls, GPT_SHADOW_ID(g, 0));
   }
 #endif
 
@@ -298,7 +311,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   if (!bsdf_is_delta(&b) && gbdpt_records_at(st->depth, params.path.max_depth)) {
     records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, is_diffuse(&b, params.shift_threshold), o, so,
                                      wo_off, params.shift_threshold);
-    connectable[atomic_inc(&counters[GPT_COUNTER_CONNECTABLE])] = g;
+    out->connectable = 1;
   }
 #endif
 #if defined(GDR_GPM)
@@ -308,7 +321,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   if (!bsdf_is_delta(&b)) {
     if (gpm_merges_at(st->depth, params.path.max_depth)) {
       records[g] = gbdpt_camera_vertex(&s, &rh.hit, wo, beta, &base, 1, o, so, wo_off, -1.0f);
-      connectable[atomic_inc(&counters[GPT_COUNTER_CONNECTABLE])] = g;
+      out->connectable = 1;
     }
     for (int k = 0; k < GPT_OFFSETS; ++k) offsets[g * GPT_OFFSETS + k] = o[k];
     return;
@@ -330,7 +343,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
     ShiftPrefix pre = offset_prefix(&o[k]);
     int reason = shift_follow_base(&b, &frame, o[k].mode == GPT_MODE_JOINED_RECENT, wo_off[k], &bs, rr, &pre);
     if (reason) {
-      kill_offset(&o[k], counters, reason);
+      kill_offset(&o[k], stats, reason);
     } else {
       offset_keep(&o[k], &pre);
 #if defined(GDR_GBDPT)
@@ -356,8 +369,38 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   vstore3(wo, 0, base.wo);
   base.rr_prob = rr;
   bases[g] = base;
-  uint slot = atomic_inc(&counters[GPT_COUNTER_BASE_RAYS]);
-  spawn_ray(&base_out[slot], su.p, su.ng, wi, g);
+  out->next = 1;
+  out->next_p = su.p;
+  out->next_ng = su.ng;
+  out->next_wi = wi;
+}
+
+// The shade step of the queue's groups; each work-group appends its rays and records together
+// (group_reserve).
+__kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
+                        __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
+                        __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
+                        __global GbdptCameraVertex* records, __global uint* connectable, __global uint* counters,
+                        PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint q = get_global_id(0);
+  GptShadeAppend out;
+  out.shadows = out.connectable = out.next = 0u;
+  if (q < count && !path_no_segments(params.path.max_depth)) {
+    gpt_shade_group(params, q, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,
+                    PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
+  }
+  const uint which[3] = {GPT_COUNTER_SHADOW_RAYS, GPT_COUNTER_CONNECTABLE, GPT_COUNTER_BASE_RAYS};
+  uint slot[3] = {out.shadows, out.connectable, out.next};
+  group_reserve(scratch, counters, which, 3, slot);
+  if (out.shadows == 0u && out.connectable == 0u && out.next == 0u) return;
+  uint g = base_in[q].ray.id;
+  for (uint j = 0; j < out.shadows; ++j) {
+    write_light_ray(&shadow_rays[slot[0] + j], out.shadow_p[j], out.shadow_ng[j], out.shadow_wi[j], out.shadow_dist[j],
+                    out.shadow_id[j]);
+  }
+  if (out.connectable) connectable[slot[1]] = g;
+  if (out.next) spawn_ray(&base_out[slot[2]], out.next_p, out.next_ng, out.next_wi, g);
 }
 
 // Adds the next-event contributions whose shadow rays Embree found unoccluded.

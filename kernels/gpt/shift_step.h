@@ -7,20 +7,32 @@
 #include "path/spawn.h"
 #include "sampling/path_sampler.h"
 #include "shift/policy.h"
+#include "wavefront/counter_shard.h"
+#include "wavefront/group_reserve.h"
 #if defined(GDR_MANIFOLD)
 #include "gpt/manifold_step.h"
 #endif
 #include "gbidir/weights.h"
 
-// The base's next vertex x_{k+1} is known: every traced offset shifts its outgoing direction.
-__kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHit* base_rays,
-                        __global GdrRayHit* offset_rays, __global GdrRay* reconnect_rays,
-                        __global const GptBaseState* bases, __global GptOffsetState* offsets,
-                        __global GptChain* chains, __global GdrManifoldWalk* walks, __global uint* counters,
-                        PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
-  uint q = get_global_id(0);
-  if (q >= count) return;
+// What a group's shift step appends to the queues: per offset none (0), its own ray (1) or a
+// reconnection toward the base's next vertex (2), from its vertex.
+typedef struct {
+  int kind[GPT_OFFSETS];
+  float3 p[GPT_OFFSETS], ng[GPT_OFFSETS], w[GPT_OFFSETS];
+  float3 next_p;
+  uint own, reconnects;
+} GptShiftAppend;
+
+// The base's next vertex x_{k+1} is known: every traced offset of group `base_rays[q].ray.id`
+// shifts its outgoing direction.
+__attribute__((always_inline)) inline void gpt_shift_group(GdrGptParams params, uint q,
+                                                           __global const GdrRayHit* base_rays,
+                                                           __global const GptBaseState* bases,
+                                                           __global GptOffsetState* offsets, __global GptChain* chains,
+                                                           __global GdrManifoldWalk* walks, __global uint* counters,
+                                                           GptShiftAppend* out, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  __global uint* stats = counter_shard(counters);
   GdrRayHit rh = base_rays[q];
   uint g = rh.ray.id;
   GptBaseState base = bases[g];
@@ -65,11 +77,8 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
 #if defined(GDR_GBDPT)
   GdrBidirOptions mo = gbdpt_options(&params);  // the options the offsets' sums take
 #endif
-  // The offsets' rays (own or reconnection), queued with one atomic each kind for the group.
-  float3 ray_p[GPT_OFFSETS], ray_ng[GPT_OFFSETS], ray_w[GPT_OFFSETS];
-  int kind[GPT_OFFSETS], own = 0, reconnects = 0;  // kind: 0 none, 1 own ray, 2 reconnection
+  out->next_p = next.p;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    kind[k] = 0;
     __global GptOffsetState* og = &offsets[g * GPT_OFFSETS + k];
     if (og->mode != GPT_MODE_TRACE) continue;
     GptOffsetState o = *og;
@@ -77,9 +86,9 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
     ShiftPrefix pre = offset_prefix(&o);
     float3 wiy_w;  // the offset's new direction (world)
     int reconnect, glossy_next_only;
-    int reason = shift_offset(params.shift, &x, &next, &y, &pre, &wiy_w, &reconnect, &glossy_next_only, counters);
+    int reason = shift_offset(params.shift, &x, &next, &y, &pre, &wiy_w, &reconnect, &glossy_next_only, stats);
     if (reason) {
-      kill_offset(&o, counters, reason);
+      kill_offset(&o, stats, reason);
       *og = o;
       continue;
     }
@@ -95,19 +104,40 @@ __kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHi
       o.mode = GPT_MODE_RECONNECTING;
       o.visible = 0;
     }
-    kind[k] = reconnect ? 2 : 1;
-    own += !reconnect;
-    reconnects += reconnect;
-    ray_p[k] = y.su.p;
-    ray_ng[k] = y.su.ng;
-    ray_w[k] = wiy_w;
+    out->kind[k] = reconnect ? 2 : 1;
+    out->own += !reconnect;
+    out->reconnects += reconnect;
+    out->p[k] = y.su.p;
+    out->ng[k] = y.su.ng;
+    out->w[k] = wiy_w;
     *og = o;
   }
-  uint r_own = own ? atomic_add(&counters[GPT_COUNTER_OFFSET_RAYS], (uint)own) : 0u;
-  uint r_rec = reconnects ? atomic_add(&counters[GPT_COUNTER_RECONNECT_RAYS], (uint)reconnects) : 0u;
+}
+
+// The shift step of the queue's groups; each work-group appends its offsets' rays together
+// (group_reserve).
+__kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHit* base_rays,
+                        __global GdrRayHit* offset_rays, __global GdrRay* reconnect_rays,
+                        __global const GptBaseState* bases, __global GptOffsetState* offsets,
+                        __global GptChain* chains, __global GdrManifoldWalk* walks, __global uint* counters,
+                        PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint q = get_global_id(0);
+  GptShiftAppend out;
+  out.own = out.reconnects = 0u;
+  for (int k = 0; k < GPT_OFFSETS; ++k) out.kind[k] = 0;
+  if (q < count) {
+    gpt_shift_group(params, q, base_rays, bases, offsets, chains, walks, counters, &out, PRIMARY_SAMPLE_NAMES,
+                    SCENE_DATA_NAMES);
+  }
+  const uint which[2] = {GPT_COUNTER_OFFSET_RAYS, GPT_COUNTER_RECONNECT_RAYS};
+  uint slot[2] = {out.own, out.reconnects};
+  group_reserve(scratch, counters, which, 2, slot);
+  if (out.own + out.reconnects == 0u) return;
+  uint g = base_rays[q].ray.id;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     uint id = g * GPT_OFFSETS + (uint)k;
-    if (kind[k] == 2) write_segment_ray(&reconnect_rays[r_rec++], ray_p[k], ray_ng[k], next.p, id);
-    if (kind[k] == 1) spawn_ray(&offset_rays[r_own++], ray_p[k], ray_ng[k], ray_w[k], id);
+    if (out.kind[k] == 2) write_segment_ray(&reconnect_rays[slot[1]++], out.p[k], out.ng[k], out.next_p, id);
+    if (out.kind[k] == 1) spawn_ray(&offset_rays[slot[0]++], out.p[k], out.ng[k], out.w[k], id);
   }
 }

@@ -14,6 +14,7 @@
 #include "path/spawn.h"
 #include "shared/pt_types.h"
 #include "shared/ray_types.h"
+#include "wavefront/group_reserve.h"
 
 __kernel void pt_generate(__global const GdrCamera* camera, GdrPtParams params, __global GdrRayHit* rays,
                           __global uint* queue, __global GdrPathState* paths) {
@@ -61,11 +62,22 @@ __kernel void pt_route(GdrPtParams params, uint count, __global const GdrRayHit*
 // BSDF sample that continues the path (Russian roulette). `direct`: the queue was not routed, and
 // a miss is added here. Always inlined: called from one kernel per material, PoCL would otherwise
 // keep the call (and shade about 9% slower).
-__attribute__((always_inline)) inline void pt_shade_hit(
-    GdrPtParams params, uint q, int type, int direct, __global const GdrRayHit* rays_in, __global const uint* queue_in,
-    __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
-    __global float4* shadow_values, __global GdrPathState* paths, __global float4* film, __global uint* counters,
-    const SceneData* sd) {
+// What a shaded hit appends to the queues: a shadow ray toward its light sample, the ray that
+// continues its path.
+typedef struct {
+  float3 p, ng;                       // the hit
+  float3 light_wi, shadow_value;      // the shadow ray's direction and what it adds if unblocked
+  float light_dist;
+  float3 wi;                          // the continuing ray's direction
+  uint pixel, slot;
+  int shadow, next;
+} PtAppend;
+
+__attribute__((always_inline)) inline void pt_shade_hit(GdrPtParams params, uint q, int type, int direct,
+                                                        __global const GdrRayHit* rays_in,
+                                                        __global const uint* queue_in, __global GdrPathState* paths,
+                                                        __global float4* film, __global uint* counters,
+                                                        const SceneData* sd, PtAppend* out) {
   if (path_no_segments(params.max_depth)) return;
   SceneData s = *sd;
   __global uint* nonfinite = &counters[PT_COUNTER_NONFINITE];
@@ -81,6 +93,10 @@ __attribute__((always_inline)) inline void pt_shade_hit(
 
   Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
   float3 wo = -dir;
+  out->p = su.p;
+  out->ng = su.ng;
+  out->pixel = st.pixel;
+  out->slot = slot;
 #if defined(GDR_LIGHT_AREA)
   float3 le;
   if (path_surface_emission(&s, &st, beta, &su, wo, rh.ray.tfar, params.strategy, &le)) {
@@ -104,9 +120,10 @@ __attribute__((always_inline)) inline void pt_shade_hit(
     float w = nee_weight(&ls, params.strategy, &b, wo_local, wi_local);
     float3 c = beta * f * ls.radiance * (w / ls.pdf);
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
-      uint k = atomic_inc(&counters[PT_COUNTER_SHADOW_RAYS]);
-      write_light_ray(&shadow_rays[k], su.p, su.ng, ls.wi, ls.dist, st.pixel);
-      shadow_values[k] = (float4)(c, 0.0f);
+      out->shadow = 1;
+      out->light_wi = ls.wi;
+      out->light_dist = ls.dist;
+      out->shadow_value = c;
     }
   }
 
@@ -120,13 +137,13 @@ __attribute__((always_inline)) inline void pt_shade_hit(
 
   path_advance(&st, beta, &bs);
   paths[slot] = st;
-  uint k = atomic_inc(&counters[PT_COUNTER_NEXT_RAYS]);
-  queue_out[k] = slot;
-  spawn_ray(&rays_out[k], su.p, su.ng, wi, slot);
+  out->next = 1;
+  out->wi = wi;
 }
 
 // pt_shade_<material>: the queue entries sorted[first, first + count) of one material (or, with
-// `direct`, the queue's entries [0, count) themselves: the scene has one material type).
+// `direct`, the queue's entries [0, count) themselves: the scene has one material type). The
+// group appends its shadow and continuing rays together (group_reserve).
 #define PT_SHADE_QUEUE(name, TYPE)                                                                            \
   __kernel void pt_shade_##name(GdrPtParams params, uint count, uint first, int direct,                      \
                                 __global const uint* sorted, __global const GdrRayHit* rays_in,              \
@@ -134,10 +151,25 @@ __attribute__((always_inline)) inline void pt_shade_hit(
                                 __global uint* queue_out, __global GdrRay* shadow_rays,                      \
                                 __global float4* shadow_values, __global GdrPathState* paths,                \
                                 __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {           \
+    __local uint scratch[GROUP_RESERVE_SCRATCH];                                                             \
     uint i = get_global_id(0);                                                                               \
-    if (i >= count) return;                                                                                  \
-    SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                     \
-    pt_shade_hit(params, direct ? i : sorted[first + i], TYPE, direct, rays_in, queue_in, rays_out,             \
-                 queue_out, shadow_rays, shadow_values, paths, film, counters, &s);                          \
+    PtAppend o;                                                                                              \
+    o.shadow = o.next = 0;                                                                                   \
+    if (i < count) {                                                                                         \
+      SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                   \
+      pt_shade_hit(params, direct ? i : sorted[first + i], TYPE, direct, rays_in, queue_in, paths, film,      \
+                   counters, &s, &o);                                                                        \
+    }                                                                                                        \
+    const uint which[2] = {PT_COUNTER_SHADOW_RAYS, PT_COUNTER_NEXT_RAYS};                                    \
+    uint k[2] = {(uint)o.shadow, (uint)o.next};                                                              \
+    group_reserve(scratch, counters, which, 2, k);                                                           \
+    if (o.shadow) {                                                                                          \
+      write_light_ray(&shadow_rays[k[0]], o.p, o.ng, o.light_wi, o.light_dist, o.pixel);                     \
+      shadow_values[k[0]] = (float4)(o.shadow_value, 0.0f);                                                  \
+    }                                                                                                        \
+    if (o.next) {                                                                                            \
+      queue_out[k[1]] = o.slot;                                                                              \
+      spawn_ray(&rays_out[k[1]], o.p, o.ng, o.wi, o.slot);                                                   \
+    }                                                                                                        \
   }
 GDR_MATERIAL_QUEUES(PT_SHADE_QUEUE)

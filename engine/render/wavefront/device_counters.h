@@ -1,6 +1,7 @@
 // The counters one integrator's kernels increment, named once in kernels/shared (the X-macro
 // lists PT_COUNTERS, GPT_COUNTERS, ...): zeroed before a step, read once after it, and their
-// running totals reported to the stats under those names.
+// running totals reported to the stats under those names. The buffer holds the list and its
+// GDR_COUNTER_SHARDS copies for stats counters (shared/counters.h); a counter's value is their sum.
 #pragma once
 #include <cstdint>
 #include <vector>
