@@ -28,6 +28,7 @@
 #include "path/spawn.h"
 #include "path/nee.h"
 #include "path/splat.h"
+#include "bidir/append.h"
 #include "bidir/camera_connection.h"
 #include "bidir/connection.h"
 #include "bidir/photon_query.h"
@@ -35,6 +36,8 @@
 #include "bidir/subpath_mis.h"
 #include "shared/bidir_types.h"
 #include "shared/ray_types.h"
+#include "wavefront/counter_shard.h"
+#include "wavefront/group_reserve.h"
 
 // Mitsuba's max_depth allows `segments` path segments (< 0: unbounded).
 inline int segments_allowed(int max_depth, int segments) { return max_depth < 0 || segments <= max_depth; }
@@ -56,19 +59,19 @@ inline GdrBidirVertex bidir_vertex(const GdrHit* hit, float3 wo, float3 beta, co
 }
 
 // Continues subpath *st (in `slot`) from surface su by BSDF sampling in `mode` (block `block` of
-// its numbers, Russian roulette after rr_depth), updating its MIS sums; its ray goes to the next
-// queue. The state is written back whether it continues or not (a light subpath's stored count
-// must survive its end).
+// its numbers, Russian roulette after rr_depth), updating its MIS sums; its ray is appended to the
+// next queue (*out). The state is written back whether it continues or not (a light subpath's
+// stored count must survive its end).
 inline void bidir_continue(GdrBidirPathState* st, const GdrBidirOptions* o, const PathSampler* ps, uint block,
                            int rr_depth, int mode, const Bsdf* b, const Frame* frame, const Surface* su,
                            float3 wo_local, float3 beta, uint slot, __global GdrBidirPathState* paths,
-                           __global uint* counters, __global uint* queue_out, __global GdrRayHit* rays_out) {
+                           __global uint* stats, BidirAppend* out) {
   BsdfSample bs;
   float3 wi;
   float rr;
   int next = path_continue_transport(st->depth, ps, block, rr_depth, st->rr_scale, mode, b, frame, su->ng, wo_local,
                                      &beta, &bs, &wi, &rr);
-  if (next == PATH_ENDS_NONFINITE) atomic_inc(&counters[BIDIR_COUNTER_NONFINITE]);
+  if (next == PATH_ENDS_NONFINITE) atomic_inc(&stats[BIDIR_COUNTER_NONFINITE]);
   if (next == PATH_CONTINUES) {
     mis_scatter(&bs, bsdf_pdf(b, bs.wi, wo_local), fabs(dot(su->ng, wi)), o, st);
     st->depth += 1;
@@ -76,9 +79,10 @@ inline void bidir_continue(GdrBidirPathState* st, const GdrBidirOptions* o, cons
   }
   paths[slot] = *st;
   if (next != PATH_CONTINUES) return;
-  uint n = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
-  queue_out[n] = slot;
-  spawn_ray(&rays_out[n], su->p, su->ng, wi, slot);
+  out->next = 1u;
+  out->next_p = su->p;
+  out->next_ng = su->ng;
+  out->next_wi = wi;
 }
 
 // Camera rays of pixels [first_pixel, first_pixel + pixel_count), for the emission seen directly.
@@ -97,7 +101,7 @@ __kernel void lt_direct(GdrPtParams params, uint count, __global const GdrRayHit
   uint i = get_global_id(0);
   if (i >= count || !segments_allowed(params.max_depth, 1)) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
-  __global uint* nonfinite = &counters[BIDIR_COUNTER_NONFINITE];
+  __global uint* nonfinite = &counter_shard(counters)[BIDIR_COUNTER_NONFINITE];
   GdrRayHit rh = rays[i];
   uint pixel = params.first_pixel + rh.ray.id;
   float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
@@ -116,11 +120,11 @@ __kernel void lt_direct(GdrPtParams params, uint count, __global const GdrRayHit
 // Light subpaths [first_pixel, first_pixel + pixel_count) of the pass leave their lights: the
 // emission sample, the first throughput and MIS sums, where each left (origins), and the ray into
 // queue 0 (compacted).
-__kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrRayHit* rays, __global uint* queue,
-                         __global GdrBidirPathState* paths, __global GdrLightOrigin* origins, __global uint* counters,
-                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
-  uint i = get_global_id(0);
-  if (i >= params.pixel_count) return;
+// Subpath i's emission; *o, *d: its ray (1 if it has one).
+__attribute__((always_inline)) inline int bidir_emit_one(GdrPtParams params, GdrBidirOptions opts, uint i,
+                                                         __global GdrBidirPathState* paths,
+                                                         __global GdrLightOrigin* origins, __global uint* stats,
+                                                         float3* o, float3* d, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   uint index = params.first_pixel + i;
   paths[i].stored = 0;
@@ -128,13 +132,13 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
   PathSampler ps = path_sampler_bound(params.seed, index, params.sample, PRIMARY_SAMPLE_NAMES);
   // Strategies with s < 2 take no light subpath (s = 1 samples its light point from the camera).
   int2 shown = bidir_path_strategy(&opts, &ps, params.max_depth);
-  if (shown.x >= 0 && shown.x < 2) return;
+  if (shown.x >= 0 && shown.x < 2) return 0;
   float4 ue = sampler_block(&ps, RNG_BLOCK_EMISSION), ud = sampler_block(&ps, RNG_BLOCK_EMISSION_DIR);
   EmissionSample e;
-  if (!light_emission_sample(&s, ue.x, ue.yz, ud.xy, &e)) return;
+  if (!light_emission_sample(&s, ue.x, ue.yz, ud.xy, &e)) return 0;
   float3 beta = emission_throughput(&e);
-  if (!finite_or_count(beta, &counters[BIDIR_COUNTER_NONFINITE]) || !(max3(beta) > 0.0f)) return;
-  atomic_inc(&counters[BIDIR_COUNTER_SUBPATHS]);
+  if (!finite_or_count(beta, &stats[BIDIR_COUNTER_NONFINITE]) || !(max3(beta) > 0.0f)) return 0;
+  atomic_inc(&stats[BIDIR_COUNTER_SUBPATHS]);
   GdrBidirPathState st;
   vstore3(beta, 0, st.throughput);
   st.rr_scale = max3(beta);
@@ -151,30 +155,43 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
   origin.light = e.light;
   origin.pad0 = 0;
   origins[i] = origin;
-  uint k = atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]);
-  queue[k] = i;
   // Area lights: off the emitting surface; the other lights' points lie on no surface.
-  float3 o = dot(e.n, e.n) > 0.0f ? leaving_origin(e.p, e.n, e.dir) : e.p;
-  write_ray_hit(&rays[k], o, e.dir, 0.0f, INFINITY, i);
+  *o = dot(e.n, e.n) > 0.0f ? leaving_origin(e.p, e.n, e.dir) : e.p;
+  *d = e.dir;
+  return 1;
+}
+
+__kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrRayHit* rays, __global uint* queue,
+                         __global GdrBidirPathState* paths, __global GdrLightOrigin* origins, __global uint* counters,
+                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint i = get_global_id(0);
+  float3 o, d;
+  int traced = i < params.pixel_count && bidir_emit_one(params, opts, i, paths, origins, counter_shard(counters), &o,
+                                                        &d, PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
+  const uint which[1] = {BIDIR_COUNTER_NEXT_RAYS};
+  uint k = (uint)traced;
+  group_reserve(scratch, counters, which, 1, &k);
+  if (!traced) return;
+  queue[k] = i;
+  write_ray_hit(&rays[k], o, d, 0.0f, INFINITY, i);
 }
 
 // A light subpath's new vertex: under bdpt it joins the light-vertex store (vertex j of subpath
 // `slot` at store[j * stride + slot]); its connection to the camera (a splat in the path's slot,
 // the vertex it came from in seen[slot] for the gradient integrators' shifts, and a shadow ray
 // toward the camera); its continuation by importance transport.
-__kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint count, uint stride,
-                                __global const GdrCamera* camera, __global const GdrRayHit* rays_in,
-                                __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
-                                __global GdrRay* shadow_rays, __global GdrSplat* splats, __global GdrBidirVertex* seen,
-                                __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
-                                __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
-  uint q = get_global_id(0);
-  if (q >= count) return;
+__attribute__((always_inline)) inline void bidir_light_shade_one(
+    GdrPtParams params, GdrBidirOptions opts, uint q, uint stride, __global const GdrCamera* camera,
+    __global const GdrRayHit* rays_in, __global const uint* queue_in, __global GdrSplat* splats,
+    __global GdrBidirVertex* seen, __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
+    __global uint* stats, BidirAppend* out, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   GdrRayHit rh = rays_in[q];
   if (rh.hit.geomID == GDR_INVALID_ID) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
-  __global uint* nonfinite = &counters[BIDIR_COUNTER_NONFINITE];
+  __global uint* nonfinite = &stats[BIDIR_COUNTER_NONFINITE];
   uint slot = queue_in[q];
+  out->slot = slot;
   GdrBidirPathState st = paths[slot];
   float3 beta = vload3(0, st.throughput);
   int k = st.depth + 1;  // this vertex's bounces from the light
@@ -198,7 +215,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
                  (bidir_merges(&opts) && segments_allowed(params.max_depth, k + 1)))) {
     store[(uint)st.stored * stride + slot] = bidir_vertex(&rh.hit, wo, beta, &st, k);
     st.stored += 1;
-    atomic_inc(&counters[BIDIR_COUNTER_LIGHT_VERTICES]);
+    atomic_inc(&stats[BIDIR_COUNTER_LIGHT_VERTICES]);
   }
 
   // Connection to the camera: beta f (cos / d^2) cos_theta We, spread by the pixels' filters.
@@ -212,9 +229,13 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
       splat_write(&splats[slot], pr.raster, c);
       seen[slot] = bidir_vertex(&rh.hit, wo, beta, &st, k);
-      uint r = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
-      atomic_inc(&counters[BIDIR_COUNTER_CAMERA_CONNECTIONS]);
-      write_segment_ray(&shadow_rays[r], su.p, su.ng, camera_position(&cam), slot);
+      atomic_inc(&stats[BIDIR_COUNTER_CAMERA_CONNECTIONS]);
+      out->shadow = 1u;
+      out->shadow_p = su.p;
+      out->shadow_ng = su.ng;
+      out->shadow_to = camera_position(&cam);
+      out->shadow_to_point = 1;
+      out->shadow_id = slot;
     }
   }
 
@@ -225,7 +246,25 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   }
   PathSampler ps = path_sampler_bound(params.seed, st.index, st.sample, PRIMARY_SAMPLE_NAMES);
   bidir_continue(&st, &opts, &ps, RNG_BLOCK_SUBPATH_BSDF(st.depth), params.rr_depth, TRANSPORT_IMPORTANCE, &b, &frame,
-                 &su, wo_local, beta, slot, paths, counters, queue_out, rays_out);
+                 &su, wo_local, beta, slot, paths, stats, out);
+}
+
+__kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint count, uint stride,
+                                __global const GdrCamera* camera, __global const GdrRayHit* rays_in,
+                                __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
+                                __global GdrRay* shadow_rays, __global GdrSplat* splats, __global GdrBidirVertex* seen,
+                                __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
+                                __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint q = get_global_id(0);
+  BidirAppend out;
+  bidir_append_none(&out);
+  if (q < count) {
+    bidir_light_shade_one(params, opts, q, stride, camera, rays_in, queue_in, splats, seen, paths, store,
+                          counter_shard(counters), &out, PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
+  }
+  uint slots[3];
+  bidir_append(scratch, counters, &out, shadow_rays, 0, queue_out, rays_out, slots);
 }
 
 // Empties the splat slots whose shadow ray toward the camera Embree found blocked.
@@ -248,11 +287,11 @@ __kernel void bidir_splats_to_paths(uint count, __global GdrSplat* splats, __glo
 // Metropolis chains: the film position is then a primary sample): the ray, the state and the MIS
 // sums of the camera vertex. Under multiplexing the rays are compacted and counted in
 // BIDIR_COUNTER_NEXT_RAYS; a pixel's ray keeps its pixel's slot.
-__kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
-                            __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths,
-                            __global uint* counters, PRIMARY_SAMPLE_ARGS) {
-  uint i = get_global_id(0);
-  if (i >= params.pixel_count) return;
+// Pixel i's subpath; *ray: its camera ray, if it traces one (1).
+__attribute__((always_inline)) inline int bdpt_generate_one(__global const GdrCamera* camera, GdrPtParams params,
+                                                            GdrBidirOptions opts, uint i,
+                                                            __global GdrBidirPathState* paths, CameraRay* ray,
+                                                            PRIMARY_SAMPLE_ARGS) {
   GdrCamera cam = *camera;
   uint pixel = params.first_pixel + i;
   PathSampler ps = path_sampler_bound(params.seed, pixel, params.sample, PRIMARY_SAMPLE_NAMES);
@@ -268,10 +307,26 @@ __kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params
   bidir_set_strategy(&st, shown);
   mis_camera_start(&cam, camera_cos_theta(&cam, r.d), opts.mis, &st);
   paths[i] = st;
+  *ray = r;
   // A multiplexed path whose strategy connects a light vertex to the camera (t = 1) traces no
   // camera subpath.
-  if (opts.multiplex && shown.y == 1) return;
-  uint k = opts.multiplex ? atomic_inc(&counters[BIDIR_COUNTER_NEXT_RAYS]) : i;
+  return !(opts.multiplex && shown.y == 1);
+}
+
+__kernel void bdpt_generate(__global const GdrCamera* camera, GdrPtParams params, GdrBidirOptions opts,
+                            __global GdrRayHit* rays, __global uint* queue, __global GdrBidirPathState* paths,
+                            __global uint* counters, PRIMARY_SAMPLE_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint i = get_global_id(0);
+  CameraRay r;
+  int traced = i < params.pixel_count && bdpt_generate_one(camera, params, opts, i, paths, &r, PRIMARY_SAMPLE_NAMES);
+  uint k = i;
+  if (opts.multiplex) {  // the same for the whole launch: every item reaches the barriers or none
+    const uint which[1] = {BIDIR_COUNTER_NEXT_RAYS};
+    k = (uint)traced;
+    group_reserve(scratch, counters, which, 1, &k);
+  }
+  if (!traced) return;
   write_camera_ray(&rays[k], &r, i);
   queue[k] = i;
 }
@@ -289,18 +344,14 @@ inline float bdpt_emission_weight(const GdrBidirOptions* o, const GdrBidirPathSt
 // (s = 1, a shadow ray with its value), its record for the connections and merges with the
 // light-vertex store (camera_vertices[slot], the slot queued in `connectable`), and its
 // continuation.
-__kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint count,
-                                __global const GdrRayHit* rays_in, __global const uint* queue_in,
-                                __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
-                                __global float4* shadow_values, __global GdrBidirPathState* paths,
-                                __global GdrBidirVertex* camera_vertices, __global uint* connectable,
-                                __global float4* film, __global uint* counters, PRIMARY_SAMPLE_ARGS,
-                                SCENE_DATA_ARGS) {
-  uint q = get_global_id(0);
-  if (q >= count) return;
+__attribute__((always_inline)) inline void bdpt_camera_shade_one(
+    GdrPtParams params, GdrBidirOptions opts, uint q, __global const GdrRayHit* rays_in, __global const uint* queue_in,
+    __global GdrBidirPathState* paths, __global GdrBidirVertex* camera_vertices, __global float4* film,
+    __global uint* stats, BidirAppend* out, float3* shadow_value, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
-  __global uint* nonfinite = &counters[BIDIR_COUNTER_NONFINITE];
+  __global uint* nonfinite = &stats[BIDIR_COUNTER_NONFINITE];
   uint slot = queue_in[q];
+  out->slot = slot;
   GdrBidirPathState st = paths[slot];
   GdrRayHit rh = rays_in[q];
   float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
@@ -349,10 +400,15 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
     float w = bidir_weight(&opts, mis_weight(others));
     float3 c = beta * bsdf_eval(&b, wo_local, wi_local) * ls.radiance * (w / ls.pdf);
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
-      uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
-      atomic_inc(&counters[BIDIR_COUNTER_NEE]);
-      write_light_ray(&shadow_rays[k], su.p, su.ng, ls.wi, ls.dist, st.index);
-      shadow_values[k] = (float4)(c, 0.0f);
+      atomic_inc(&stats[BIDIR_COUNTER_NEE]);
+      out->shadow = 1u;
+      out->shadow_p = su.p;
+      out->shadow_ng = su.ng;
+      out->shadow_wi = ls.wi;
+      out->shadow_dist = ls.dist;
+      out->shadow_to_point = 0;
+      out->shadow_id = st.index;
+      *shadow_value = c;
     }
   }
 
@@ -361,7 +417,7 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   if (!delta && ((connects && segments_allowed(params.max_depth, t + 2)) ||
                  (merges && segments_allowed(params.max_depth, t + 1)))) {
     camera_vertices[slot] = bidir_vertex(&rh.hit, wo, beta, &st, t);
-    connectable[atomic_inc(&counters[BIDIR_COUNTER_CONNECTABLE])] = slot;
+    out->connectable = 1u;
   }
   // pm's visible point is the first rough vertex: the subpath ends there.
   if (opts.technique == BIDIR_PM && !delta) return;
@@ -369,7 +425,28 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
 
   // BSDF sampling continues the subpath.
   bidir_continue(&st, &opts, &ps, RNG_BLOCK_BSDF(st.depth), params.rr_depth, TRANSPORT_RADIANCE, &b, &frame, &su,
-                 wo_local, beta, slot, paths, counters, queue_out, rays_out);
+                 wo_local, beta, slot, paths, stats, out);
+}
+
+__kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint count,
+                                __global const GdrRayHit* rays_in, __global const uint* queue_in,
+                                __global GdrRayHit* rays_out, __global uint* queue_out, __global GdrRay* shadow_rays,
+                                __global float4* shadow_values, __global GdrBidirPathState* paths,
+                                __global GdrBidirVertex* camera_vertices, __global uint* connectable,
+                                __global float4* film, __global uint* counters, PRIMARY_SAMPLE_ARGS,
+                                SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint q = get_global_id(0);
+  BidirAppend out;
+  bidir_append_none(&out);
+  float3 value;
+  if (q < count) {
+    bdpt_camera_shade_one(params, opts, q, rays_in, queue_in, paths, camera_vertices, film, counter_shard(counters),
+                          &out, &value, PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
+  }
+  uint slots[3];
+  bidir_append(scratch, counters, &out, shadow_rays, connectable, queue_out, rays_out, slots);
+  if (out.shadow) shadow_values[slots[0]] = (float4)(value, 0.0f);
 }
 
 // Connects the camera vertices queued in `connectable` to vertex j of their pixel's light subpath
@@ -377,35 +454,50 @@ __kernel void bdpt_camera_shade(GdrPtParams params, GdrBidirOptions opts, uint c
 // between the two surfaces, added by path_shadow_add where unoccluded. j = BIDIR_OWN_STRATEGY:
 // the stored vertex of the path's one strategy (multiplexed: a path connects once at most, so one
 // launch serves every stored vertex).
+// Entry q's connection: 1 with its segment (*cn) and weighted value (*value) where it adds.
+__attribute__((always_inline)) inline int bdpt_connect_one(
+    GdrPtParams params, GdrBidirOptions opts, uint q, uint j, uint stride, __global const uint* connectable,
+    __global const GdrBidirVertex* camera_vertices, __global const GdrBidirPathState* light_paths,
+    __global const GdrBidirVertex* store, __global uint* stats, BidirConnection* cn, float3* value, SCENE_DATA_ARGS) {
+  uint slot = connectable[q];
+  GdrBidirPathState light = light_paths[slot];
+  GdrBidirVertex z = camera_vertices[slot];
+  if (j == BIDIR_OWN_STRATEGY) {
+    if (z.depth + 1 != light.shown_t) return 0;
+    for (j = 0; j < (uint)light.stored && store[j * stride + slot].depth + 1 != light.shown_s; ++j) {
+    }
+  }
+  if ((int)j >= light.stored) return 0;
+  GdrBidirVertex y = store[j * stride + slot];
+  if (!segments_allowed(params.max_depth, z.depth + y.depth + 1) ||
+      !bidir_strategy_shown(&light, y.depth + 1, z.depth + 1)) return 0;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  atomic_inc(&stats[BIDIR_COUNTER_CONNECTIONS]);
+  if (!bidir_connection(&s, &z, &y, &opts, cn)) return 0;
+  float3 c = cn->value;
+  if (!(max3(c) > 0.0f)) return 0;
+  c *= bidir_weight(&opts, mis_weight(cn->others));
+  if (!(max3(c) > 0.0f) || !finite_or_count(c, &stats[BIDIR_COUNTER_NONFINITE])) return 0;
+  *value = c;
+  return 1;
+}
+
 __kernel void bdpt_connect(GdrPtParams params, GdrBidirOptions opts, uint count, uint j, uint stride,
                            __global const uint* connectable, __global const GdrBidirVertex* camera_vertices,
                            __global const GdrBidirPathState* light_paths, __global const GdrBidirVertex* store,
                            __global GdrRay* shadow_rays, __global float4* shadow_values, __global uint* counters,
                            SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
   uint q = get_global_id(0);
-  if (q >= count) return;
-  uint slot = connectable[q];
-  GdrBidirPathState light = light_paths[slot];
-  GdrBidirVertex z = camera_vertices[slot];
-  if (j == BIDIR_OWN_STRATEGY) {
-    if (z.depth + 1 != light.shown_t) return;
-    for (j = 0; j < (uint)light.stored && store[j * stride + slot].depth + 1 != light.shown_s; ++j) {
-    }
-  }
-  if ((int)j >= light.stored) return;
-  GdrBidirVertex y = store[j * stride + slot];
-  if (!segments_allowed(params.max_depth, z.depth + y.depth + 1) ||
-      !bidir_strategy_shown(&light, y.depth + 1, z.depth + 1)) return;
-  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
-  atomic_inc(&counters[BIDIR_COUNTER_CONNECTIONS]);
   BidirConnection cn;
-  if (!bidir_connection(&s, &z, &y, &opts, &cn)) return;
-  float3 c = cn.value;
-  if (!(max3(c) > 0.0f)) return;
-  c *= bidir_weight(&opts, mis_weight(cn.others));
-  if (!(max3(c) > 0.0f) || !finite_or_count(c, &counters[BIDIR_COUNTER_NONFINITE])) return;
-  uint k = atomic_inc(&counters[BIDIR_COUNTER_SHADOW_RAYS]);
-  write_segment_ray(&shadow_rays[k], cn.from, cn.from_ng, cn.to, params.first_pixel + slot);
+  float3 c;
+  int connected = q < count && bdpt_connect_one(params, opts, q, j, stride, connectable, camera_vertices, light_paths,
+                                                store, counter_shard(counters), &cn, &c, SCENE_DATA_NAMES);
+  const uint which[1] = {BIDIR_COUNTER_SHADOW_RAYS};
+  uint k = (uint)connected;
+  group_reserve(scratch, counters, which, 1, &k);
+  if (!connected) return;
+  write_segment_ray(&shadow_rays[k], cn.from, cn.from_ng, cn.to, params.first_pixel + connectable[q]);
   shadow_values[k] = (float4)(c, 0.0f);
 }
 
@@ -446,9 +538,10 @@ __kernel void vcm_merge(GdrPtParams params, GdrBidirOptions opts, uint count, ui
     ++merged;
   }
   if (merged == 0) return;
-  atomic_add(&counters[BIDIR_COUNTER_MERGES], merged);
+  __global uint* stats = counter_shard(counters);
+  atomic_add(&stats[BIDIR_COUNTER_MERGES], merged);
   film_add(film, params.first_pixel + slot, vload3(0, z.throughput) * sum * opts.vm_normalization,
-           &counters[BIDIR_COUNTER_NONFINITE]);
+           &stats[BIDIR_COUNTER_NONFINITE]);
 }
 
 // The grid's keys: each light vertex of the store (entry j * stride + slot, j < the subpath's

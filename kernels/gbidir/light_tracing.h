@@ -41,6 +41,8 @@
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 #include "shared/splat_types.h"
+#include "wavefront/counter_shard.h"
+#include "wavefront/group_reserve.h"
 
 // The parent of light vertex x, seen by the camera from light subpath i (`seen`, after the bounce
 // that reached it): x's entry in the light-vertex store, or the one after the last where it was
@@ -53,14 +55,13 @@ inline PhotonParent lt_parent(const SceneData* s, const GdrBidirVertex* x, uint 
   return photon_parent(s, store, origins, stride, (uint)j * stride + i, x);
 }
 
-__kernel void gbdpt_lt_offset_rays(GdrGptParams params, uint count, uint stride, __global const GdrCamera* camera,
-                                   __global const GdrSplat* splats, __global const GdrBidirVertex* seen,
-                                   __global const GdrBidirPathState* light_paths,
-                                   __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
-                                   __global float4* pairs, __global GdrRayHit* rays, __global uint* counters,
-                                   SCENE_DATA_ARGS) {
-  uint i = get_global_id(0);
-  if (i >= count) return;
+// Splat slot i's offsets: the camera rays through the neighbours' film positions (traced[k],
+// rs[k]; *n of them).
+__attribute__((always_inline)) inline void gbdpt_lt_offset_rays_of(
+    GdrGptParams params, uint i, uint stride, __global const GdrCamera* camera, __global const GdrSplat* splats,
+    __global const GdrBidirVertex* seen, __global const GdrBidirPathState* light_paths,
+    __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins, __global float4* pairs,
+    __global uint* stats, CameraRay* rs, int* traced, uint* n, SCENE_DATA_ARGS) {
   for (int k = 0; k < GPT_OFFSETS; ++k) pairs[i * GPT_OFFSETS + k] = (float4)(0.0f);
   if (!splats[i].valid) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -68,22 +69,40 @@ __kernel void gbdpt_lt_offset_rays(GdrGptParams params, uint count, uint stride,
   if (lt_parent(&s, &x, i, stride, light_paths, store, origins).kind == GPM_PARENT_NONE) {
     // A delta parent: no offset of this path, nor of any it could be shifted from, exists.
     pairs[i * GPT_OFFSETS].w = GBDPT_LT_UNSHIFTED;
-    atomic_inc(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT]);
+    atomic_inc(&stats[GPT_COUNTER_FAIL_PHOTON_PARENT]);
     return;
   }
   GdrCamera cam = *camera;
   float2 r = (float2)(splats[i].raster[0], splats[i].raster[1]);
-  CameraRay rs[GPT_OFFSETS];
-  int traced[GPT_OFFSETS], n = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     float2 r2 = r + (float2)(OFFSET_PIXEL_DX(k), OFFSET_PIXEL_DY(k));
     traced[k] = camera_raster_inside(&cam, r2);
     if (traced[k]) camera_ray(&cam, r2.x, r2.y, &rs[k].o, &rs[k].d, &rs[k].tnear, &rs[k].tfar);
-    n += traced[k];
+    *n += (uint)traced[k];
   }
-  if (n < GPT_OFFSETS) atomic_add(&counters[GPT_COUNTER_FAIL_OUTSIDE], (uint)(GPT_OFFSETS - n));
-  if (n == 0) return;
-  uint slot = atomic_add(&counters[GPT_COUNTER_LT_OFFSET_RAYS], (uint)n);
+  if (*n < GPT_OFFSETS) atomic_add(&stats[GPT_COUNTER_FAIL_OUTSIDE], GPT_OFFSETS - *n);
+}
+
+// Each work-group appends its slots' offset rays together (group_reserve).
+__kernel void gbdpt_lt_offset_rays(GdrGptParams params, uint count, uint stride, __global const GdrCamera* camera,
+                                   __global const GdrSplat* splats, __global const GdrBidirVertex* seen,
+                                   __global const GdrBidirPathState* light_paths,
+                                   __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                   __global float4* pairs, __global GdrRayHit* rays, __global uint* counters,
+                                   SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  uint i = get_global_id(0);
+  CameraRay rs[GPT_OFFSETS];
+  int traced[GPT_OFFSETS];
+  uint n = 0u;
+  for (int k = 0; k < GPT_OFFSETS; ++k) traced[k] = 0;
+  if (i < count) {
+    gbdpt_lt_offset_rays_of(params, i, stride, camera, splats, seen, light_paths, store, origins, pairs,
+                            counter_shard(counters), rs, traced, &n, SCENE_DATA_NAMES);
+  }
+  const uint which[1] = {GPT_COUNTER_LT_OFFSET_RAYS};
+  uint slot = n;
+  group_reserve(scratch, counters, which, 1, &slot);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     if (traced[k]) write_camera_ray(&rays[slot++], &rs[k], i * GPT_OFFSETS + (uint)k);
   }
@@ -130,7 +149,7 @@ __kernel void gbdpt_lt_offset_eval(GdrGptParams params, GdrBidirOptions opts, ui
   uint id = rh.ray.id, i = id / GPT_OFFSETS;
   write_ray(&shadow_rays[q], (float3)(0.0f), (float3)(0.0f, 0.0f, 1.0f), 1.0f, 0.0f, id);  // skipped unless formed
   if (rh.hit.geomID == GDR_INVALID_ID) {
-    atomic_inc(&counters[GPT_COUNTER_FAIL_ENVIRONMENT]);
+    atomic_inc(&counter_shard(counters)[GPT_COUNTER_FAIL_ENVIRONMENT]);
     return;
   }
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -142,7 +161,7 @@ __kernel void gbdpt_lt_offset_eval(GdrGptParams params, GdrBidirOptions opts, ui
   float3 v;
   float r;
   if (!lt_offset(&s, &cam, &opts, &pa, &x, &sx, &sy, &y, &v, &r)) {
-    atomic_inc(&counters[GPT_COUNTER_FAIL_ZERO]);
+    atomic_inc(&counter_shard(counters)[GPT_COUNTER_FAIL_ZERO]);
     return;
   }
   pairs[id] = (float4)(v, r);
@@ -160,10 +179,10 @@ __kernel void gbdpt_lt_offset_blocked(uint count, __global const GdrRay* shadow_
   GdrRay r = shadow_rays[q];
   if (!(pairs[r.id].w > 0.0f)) return;  // not formed: Embree skipped its ray
   if (shadow_unoccluded(r.tfar)) {
-    atomic_inc(&counters[GPT_COUNTER_LT_OFFSETS]);
+    atomic_inc(&counter_shard(counters)[GPT_COUNTER_LT_OFFSETS]);
   } else {
     pairs[r.id] = (float4)(0.0f);
-    atomic_inc(&counters[GPT_COUNTER_FAIL_OCCLUDED]);
+    atomic_inc(&counter_shard(counters)[GPT_COUNTER_FAIL_OCCLUDED]);
   }
 }
 

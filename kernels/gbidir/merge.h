@@ -24,6 +24,7 @@
 #include "path/film.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
+#include "wavefront/counter_shard.h"
 
 // Whether an offset's merge point is a vertex of its own (the photon is shifted there): G-PM's
 // visible points all are; G-VCM's offsets at a glossy vertex of their own too (a merge ends the
@@ -131,7 +132,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   uint q = first + get_global_id(0);
   if (q >= first + count) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
-  __global uint* nonfinite = &counters[GPT_COUNTER_NONFINITE];
+  __global uint* stats = counter_shard(counters);
+  __global uint* nonfinite = &stats[GPT_COUNTER_NONFINITE];
   uint g = connectable[q];
   uint pixel = bases[g].path.pixel;
   GbdptCameraVertex rec = records[g];
@@ -165,7 +167,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       fo[k] = frame_from_normal(so[k].ns);
       if (bsdf_is_delta(&bo[k])) {
         own[k] = 0;
-        atomic_inc(&counters[GPT_COUNTER_FAIL_LOBE]);
+        atomic_inc(&stats[GPT_COUNTER_FAIL_LOBE]);
       }
     }
     if (own[k] || shared[k]) wo_o[k] = frame_to_local(&fo[k], vload3(0, rec.offset[k].wo));
@@ -249,10 +251,10 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       if (formed) sum_off[k] += w.y * co;
     }
   }
-  if (orphans) atomic_add(&counters[GPT_COUNTER_FAIL_PHOTON_PARENT], orphans);
-  if (lost) atomic_add(&counters[GPT_COUNTER_FAIL_PHOTON_LOST], lost);
+  if (orphans) atomic_add(&stats[GPT_COUNTER_FAIL_PHOTON_PARENT], orphans);
+  if (lost) atomic_add(&stats[GPT_COUNTER_FAIL_PHOTON_LOST], lost);
   if (merged == 0) return;
-  atomic_add(&counters[GPT_COUNTER_MERGES], merged);
+  atomic_add(&stats[GPT_COUNTER_MERGES], merged);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     acc_add(acc, pixel, GPT_ACC_BASE(k), checked(sum_base[k], nonfinite));
     acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(sum_off[k], nonfinite));

@@ -1,12 +1,14 @@
 // The device primitives (render/wavefront/primitives.h) against their definitions on the host:
 // exclusive scan, compaction, selection by key and the stable sort by key, at sizes around the scan's block of
-// 256 and across its levels (256^2 items need two).
+// 256 and across its levels (256^2 items need two); the work-groups' reservations of queue slots
+// (wavefront/group_reserve.h) and the stats counters' per-work-group copies (device_counters.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <numeric>
 #include <random>
 
+#include "render/wavefront/device_counters.h"
 #include "render/wavefront/primitives.h"
 #include "support/devices.h"
 
@@ -102,6 +104,52 @@ TEST(DevicePrimitives, SortByKeyIsStable) {
       for (cl_uint i = s[b]; i < s[b + 1]; ++i) ASSERT_EQ(keys[got[i]], b) << n << " items, bucket " << b;
     }
     EXPECT_EQ(s[buckets], count);
+  }
+}
+
+// Items of work-groups of 64 reserve slots in two queues at once (test kernel
+// group_reserve_fill: item i wants (7 i) mod 4 of queue a and one of queue b where 3 divides i):
+// the counters come to the totals, and every item finds its own entries, contiguous, in each
+// queue, with no slot written twice or left out. A third counter, incremented in the work-groups'
+// copies, sums to the item count.
+TEST(DevicePrimitives, GroupReserveGivesEachItemItsOwnSlots) {
+  Context& ctx = test::default_context();
+  Kernel fill = ctx.program("tests/group_reserve_test.cl")->kernel("group_reserve_fill");
+  for (size_t n : {size_t{1}, size_t{63}, size_t{64}, size_t{65}, size_t{1000}, size_t{100001}}) {
+    size_t want_a = 0, want_b = 0;
+    for (size_t i = 0; i < n; ++i) {
+      want_a += (i * 7) % 4;
+      want_b += i % 3 == 0;
+    }
+    DeviceCounters counters(ctx, {"", "", ""});
+    counters.reset();
+    const cl_uint unwritten = 0xFFFFFFFFu;
+    Buffer<cl_uint> a(ctx, std::vector<cl_uint>(want_a + 1, unwritten)), b(ctx, std::vector<cl_uint>(want_b + 1, unwritten));
+    fill.args(cl_uint(n), counters.buffer(), a, b).run(n, 64);
+    const std::vector<cl_uint>& c = counters.read();
+    ASSERT_EQ(c[0], want_a) << n << " items";
+    ASSERT_EQ(c[1], want_b) << n << " items";
+    EXPECT_EQ(c[2], n) << n << " items";
+    std::vector<cl_uint> qa = a.read(), qb = b.read();
+    EXPECT_EQ(qa[want_a], unwritten) << n << " items: a slot past the count was written";
+    EXPECT_EQ(qb[want_b], unwritten) << n << " items: a slot past the count was written";
+    // Queue a: runs of each item's index as long as it wanted, every item once.
+    std::vector<size_t> seen(n, 0);
+    for (size_t k = 0; k < want_a;) {
+      cl_uint i = qa[k];
+      ASSERT_LT(i, n) << n << " items: slot " << k << " of queue a";
+      ASSERT_EQ(seen[i], 0u) << n << " items: item " << i << "'s entries are not contiguous";
+      size_t run = 0;
+      while (k < want_a && qa[k] == i) ++k, ++run;
+      seen[i] = run;
+      EXPECT_EQ(run, (size_t(i) * 7) % 4) << n << " items: item " << i;
+    }
+    std::vector<int> in_b(n, 0);
+    for (size_t k = 0; k < want_b; ++k) {
+      ASSERT_LT(qb[k], n) << n << " items: slot " << k << " of queue b";
+      ASSERT_EQ(qb[k] % 3, 0u) << n << " items";
+      ASSERT_EQ(in_b[qb[k]]++, 0) << n << " items: item " << qb[k] << " twice in queue b";
+    }
   }
 }
 
