@@ -21,8 +21,50 @@ inline float filter_erfc(float x) {
 
 inline float gaussian_tail(float r, float t) {  // integral over [t, r], 0 <= t <= r
   float sigma = 0.25f * r, k = M_SQRT1_2_F / sigma;
-  const float sqrt_half_pi = 1.2533141f, bias = exp(-8.0f);
-  return fmax(sigma * sqrt_half_pi * (filter_erfc(t * k) - filter_erfc(r * k)) - bias * (r - t), 0.0f);
+  // erfc(r k) = erfc(2 sqrt 2) at the cut r = 4 sigma, whatever r.
+  const float sqrt_half_pi = 1.2533141f, bias = exp(-8.0f), erfc_cut = 6.3342484e-5f;
+  float erfc_t = t > 0.0f ? filter_erfc(t * k) : 1.0f;
+  return fmax(sigma * sqrt_half_pi * (erfc_t - erfc_cut) - bias * (r - t), 0.0f);
+}
+
+// erfinv(x) for |x| < 1 (Giles, "Approximating the erfinv function", GPU Computing Gems 2011:
+// relative error about 1e-7 in single precision).
+inline float filter_erfinv(float x) {
+  float w = -log((1.0f - x) * (1.0f + x)), p;
+  if (w < 5.0f) {
+    w -= 2.5f;
+    p = 2.81022636e-08f;
+    p = 3.43273939e-07f + p * w;
+    p = -3.5233877e-06f + p * w;
+    p = -4.39150654e-06f + p * w;
+    p = 0.00021858087f + p * w;
+    p = -0.00125372503f + p * w;
+    p = -0.00417768164f + p * w;
+    p = 0.246640727f + p * w;
+    p = 1.50140941f + p * w;
+  } else {
+    w = sqrt(w) - 3.0f;
+    p = -0.000200214257f;
+    p = 0.000100950558f + p * w;
+    p = 0.00134934322f + p * w;
+    p = -0.00367342844f + p * w;
+    p = 0.00573950773f + p * w;
+    p = -0.0076224613f + p * w;
+    p = 0.00943887047f + p * w;
+    p = 1.00167406f + p * w;
+    p = 2.83297682f + p * w;
+  }
+  return p * x;
+}
+
+// Where the gaussian filter's cdf reaches `target`, ignoring its cut at r and its offset (both
+// below 4e-4 of its peak): the start of the Newton steps that invert the filter's own cdf, which
+// then take one or two steps instead of five or more from the centre.
+inline float gaussian_inverse_guess(float r, float target) {
+  float sigma = 0.25f * r;
+  const float sqrt_half_pi = 1.2533141f;
+  float x = clamp(target / (sigma * sqrt_half_pi) - 1.0f, -0.9999999f, 0.9999999f);
+  return sigma * M_SQRT2_F * filter_erfinv(x);
 }
 
 inline float filter_cdf(int filter, float r, float t) {
@@ -58,9 +100,12 @@ inline float sample_filter_axis(int filter, float r, float2 range, float u) {
   if (filter == FILTER_TENT) {
     t = target <= 0.5f * r ? -r + sqrt(2.0f * r * target) : r - sqrt(fmax(2.0f * r * (r - target), 0.0f));
   } else {
-    t = clamp(0.0f, lo, hi);
+    t = clamp(gaussian_inverse_guess(r, target), lo, hi);
     for (int i = 0; i < 32; ++i) {
       float e = filter_cdf(filter, r, t) - target;
+      // Within a few float steps of the cdf (at most 0.63 r): in the tails, where the filter is
+      // small, Newton's step size alone would not get there before the bracket closes.
+      if (fabs(e) <= 1.5e-7f * r) break;
       if (e > 0.0f) hi = t;
       else lo = t;
       float d = filter_eval(filter, r, t), next = t - e / d;
