@@ -6,18 +6,16 @@
 inline float2 square_to_uniform_disk_concentric(float2 u) {
   float x = 2.0f * u.x - 1.0f, y = 2.0f * u.y - 1.0f;
   if (x == 0.0f && y == 0.0f) return (float2)(0.0f);
-  float r, phi;
+  float r, phi;  // phi in units of pi, within [-1/4, 3/4]
   if (fabs(x) > fabs(y)) {
     r = x;
-    phi = (M_PI_F / 4.0f) * (y / x);
+    phi = 0.25f * (y / x);
   } else {
     r = y;
-    phi = (M_PI_F / 2.0f) - (M_PI_F / 4.0f) * (x / y);
+    phi = 0.5f - 0.25f * (x / y);
   }
-  // sincos shares one argument reduction between the two (same values as sin and cos).
-  float c;
-  float sn = sincos(phi, &c);
-  return (float2)(r * c, r * sn);
+  // sinpi and cospi need no argument reduction by pi (sincos's was 3.5% of pt's time on PoCL).
+  return (float2)(r * cospi(phi), r * sinpi(phi));
 }
 
 // Cosine-weighted hemisphere around +z (Malley's method).
