@@ -22,6 +22,19 @@ void write_cdf(const std::vector<double>& masses, float* out) {
   }
 }
 
+// The guide of a cdf over n intervals (shared/environment_table.h): entry j is the interval with
+// cdf[i] <= j / K < cdf[i + 1], found by the kernels' comparison (the first i with
+// cdf[i + 1] > u, the last interval when none).
+void write_guide(const float* cdf, int n, float* out) {
+  const int k = env_table_guide_buckets(n);
+  int i = 0;
+  for (int j = 0; j <= k; ++j) {
+    const float u = static_cast<float>(j) / static_cast<float>(k);
+    while (i < n - 1 && cdf[i + 1] <= u) ++i;
+    out[j] = static_cast<float>(i);
+  }
+}
+
 // Mean of sin(theta) over the latitudes nearer to row r (at theta = pi r / (h - 1)) than to its
 // neighbours. Unlike sin(theta_r) it is positive on the poles' rows, so the sampled density
 // covers every direction where the map is bright, also the caps between a pole and the next row.
@@ -82,7 +95,9 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
         f[c] = static_cast<float>(weight[size_t(r) * w + c] / z);
       }
       write_cdf(interval, table + env_table_columns_offset(w, h, r));
+      write_guide(table + env_table_columns_offset(w, h, r), w, table + env_table_column_guide_offset(w, h, r));
     }
+    write_guide(table, h - 1, table + env_table_band_guide_offset(w, h));
   }
 }
 

@@ -106,9 +106,10 @@ inline int light_emission_sample_index(const SceneData* s, int index, float2 u_p
       float3 w = environment_sample(s, l, u_dir);
       e->dir = -w;
       e->p = disc_point(vload3(0, l->position) + w * l->scene_radius, e->dir, l->scene_radius, u_pos);
-      e->pdf_dir = e->pmf > 0.0f ? environment_pdf(s, w) / e->pmf : 0.0f;
+      float pdf_w;
+      e->le = environment_eval(s, w, &pdf_w);
+      e->pdf_dir = e->pmf > 0.0f ? pdf_w / e->pmf : 0.0f;
       e->pdf_pos = infinite_disc_pdf(l);
-      e->le = environment_radiance(s, l, w);
       break;
     }
 #endif

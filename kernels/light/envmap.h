@@ -65,9 +65,12 @@ inline float sample_linear(float u, float a, float b) {
   return fmin(x, 0x1.fffffep-1f);
 }
 
-// Index i with cdf[i] <= u < cdf[i + 1] among n intervals, and u rescaled to [0, 1) inside it.
-inline int sample_cdf(__global const float* cdf, int n, float u, float* rescaled) {
-  int lo = 0, hi = n - 1;
+// Index i with cdf[i] <= u < cdf[i + 1] among n intervals, and u rescaled to [0, 1) inside it;
+// the search runs between the bounds the cdf's guide gives u's bucket.
+inline int sample_cdf(__global const float* cdf, __global const float* guide, int n, float u, float* rescaled) {
+  int k = env_table_guide_buckets(n);
+  int j = clamp((int)(u * (float)k), 0, k - 1);
+  int lo = (int)guide[j], hi = (int)guide[j + 1];
   while (lo < hi) {
     int mid = (lo + hi) / 2;
     if (cdf[mid + 1] <= u) lo = mid + 1;
@@ -92,7 +95,7 @@ inline float envmap_uv_pdf(__global const float* table, int w, int h, float2 uv)
 inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
   __global const float* sums = table + env_table_row_sums_offset(h);
   float ub, ur;
-  int band = sample_cdf(table, h - 1, u.y, &ub);
+  int band = sample_cdf(table, table + env_table_band_guide_offset(w, h), h - 1, u.y, &ub);
   float a = sums[band], b = sums[band + 1];
   float fr = sample_linear(ub, a, b);
   // At v the band's density is (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised
@@ -108,7 +111,8 @@ inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2
   }
   ur = clamp(ur, 0.0f, 0x1.fffffep-1f);
   float uc;
-  int c = sample_cdf(table + env_table_columns_offset(w, h, row), w, ur, &uc);
+  int c = sample_cdf(table + env_table_columns_offset(w, h, row), table + env_table_column_guide_offset(w, h, row), w,
+                     ur, &uc);
   __global const float* f = table + env_table_weights_offset(w, h, row);
   float fc = sample_linear(uc, f[c], f[c + 1 == w ? 0 : c + 1]);
   float x = ((float)c + fc + 0.5f) / (float)w;

@@ -46,13 +46,29 @@ inline void copy_matrix(__global const float* m, float* out) {
   for (int i = 0; i < 12; ++i) out[i] = m[i];
 }
 
+#if defined(GDR_LIGHT_ENVMAP)
+// World direction dir in the map's frame (unit).
+inline float3 envmap_local_direction(__global const GdrLight* l, float3 dir) {
+  float to_local[12];
+  copy_matrix(l->to_local, to_local);
+  return normalize(xform_vector(to_local, dir));
+}
+
+// Solid-angle pdf of sampling local direction d (at lat-long position uv) from the map of light
+// l, chosen with probability pmf. d(solid angle) = 2 pi^2 sin(theta) du dv.
+inline float envmap_solid_angle_pdf(const SceneData* s, __global const GdrLight* l, float pmf, float3 d, float2 uv) {
+  float sin_theta = sqrt(d.x * d.x + d.z * d.z);
+  __global const GdrTexture* t = &s->textures[l->texture];
+  float p = envmap_uv_pdf(s->env_tables + l->distribution_offset, t->width, t->height, uv);
+  return sin_theta > 0.0f ? pmf * p / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
+}
+#endif
+
 // Environment emission seen along world direction `dir`.
 inline float3 environment_radiance(const SceneData* s, __global const GdrLight* l, float3 dir) {
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
-    float to_local[12];
-    copy_matrix(l->to_local, to_local);
-    float2 uv = envmap_uv(normalize(xform_vector(to_local, dir)));
+    float2 uv = envmap_uv(envmap_local_direction(l, dir));
     return envmap_lookup(s, &s->textures[l->texture], uv) * vload3(0, l->radiance);
   }
 #endif
@@ -66,17 +82,28 @@ inline float environment_pdf(const SceneData* s, float3 dir) {
 #if defined(GDR_LIGHT_ENVMAP)
   __global const GdrLight* l = &s->lights[s->env_light];
   if (l->type == LIGHT_ENVMAP) {
-    float to_local[12];
-    copy_matrix(l->to_local, to_local);
-    float3 d = normalize(xform_vector(to_local, dir));
-    float sin_theta = sqrt(d.x * d.x + d.z * d.z);
-    __global const GdrTexture* t = &s->textures[l->texture];
-    float p = envmap_uv_pdf(s->env_tables + l->distribution_offset, t->width, t->height, envmap_uv(d));
-    // d(solid angle) = 2 pi^2 sin(theta) du dv.
-    return sin_theta > 0.0f ? pmf * p / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
+    float3 d = envmap_local_direction(l, dir);
+    return envmap_solid_angle_pdf(s, l, pmf, d, envmap_uv(d));
   }
 #endif
   return pmf * GDR_INV_4PI;
+}
+
+// Both of the above for the scene's environment (s->env_light >= 0), from one conversion of dir
+// to the map's position: the radiance arriving along -dir, and *pdf.
+inline float3 environment_eval(const SceneData* s, float3 dir, float* pdf) {
+  __global const GdrLight* l = &s->lights[s->env_light];
+  float pmf = light_pmf(s, s->env_light);
+#if defined(GDR_LIGHT_ENVMAP)
+  if (l->type == LIGHT_ENVMAP) {
+    float3 d = envmap_local_direction(l, dir);
+    float2 uv = envmap_uv(d);
+    *pdf = envmap_solid_angle_pdf(s, l, pmf, d, uv);
+    return envmap_lookup(s, &s->textures[l->texture], uv) * vload3(0, l->radiance);
+  }
+#endif
+  *pdf = pmf * GDR_INV_4PI;
+  return vload3(0, l->radiance);
 }
 
 // A direction toward the environment: by the envmap's luminance, or uniform for a constant one.
@@ -171,8 +198,7 @@ inline int light_connect(const SceneData* s, int index, float3 p, LightSample* l
     case LIGHT_CONSTANT:
     case LIGHT_ENVMAP:
       ls->dist = INFINITY;
-      ls->radiance = environment_radiance(s, l, ls->wi);
-      ls->pdf = environment_pdf(s, ls->wi);
+      ls->radiance = environment_eval(s, ls->wi, &ls->pdf);
       return ls->pdf > 0.0f;
 #endif
     default:

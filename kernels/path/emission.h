@@ -33,8 +33,9 @@ inline float emission_weight(const GdrPathState* st, int strategy, float light_p
 // The weighted contribution of the environment to a path (throughput beta) escaping along dir.
 inline float3 path_escaped_emission(const SceneData* s, const GdrPathState* st, float3 beta, float3 dir,
                                     int strategy) {
-  float3 le = escaped_radiance(s, dir);
-  return beta * le * emission_weight(st, strategy, escaped_light_pdf(s, dir));
+  float light_pdf;
+  float3 le = environment_eval(s, dir, &light_pdf);
+  return beta * le * emission_weight(st, strategy, light_pdf);
 }
 
 // The weighted contribution *c of the surface a path hit at distance dist (from direction wo);

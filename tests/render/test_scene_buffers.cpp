@@ -5,6 +5,7 @@
 // coating table), so that no buffer is empty.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "render/device_scene.h"
@@ -107,6 +108,41 @@ TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
     if (r > 0) integral += 0.5 * sums[r];
   }
   EXPECT_NEAR(integral, 1.0, 1e-5);
+}
+
+// Each guide entry j is the interval u = j / K falls in, so every u of bucket j falls between
+// entries j and j + 1: the guided search finds the interval a search of the whole cdf finds.
+// Checked for the band cdf and every row's, at the bucket's ends and 16 points inside each bucket.
+TEST(SceneBuffers, EnvironmentGuidesBoundEachBucketsInterval) {
+  Scene scene = test::envmap_scene();
+  SceneArrays a = scene_arrays(test::default_context(), scene);
+  const GdrLight& env = a.lights.back();
+  const GdrTexture& t = a.textures[env.texture];
+  const int w = t.width, h = t.height;
+  const float* table = &a.env_tables[env.distribution_offset];
+  auto check = [](const float* cdf, const float* guide, int n, const std::string& what) {
+    auto interval = [&](float u) {
+      return static_cast<int>(std::upper_bound(cdf + 1, cdf + n, u) - (cdf + 1));
+    };
+    const int k = env_table_guide_buckets(n);
+    ASSERT_GE(k, n);
+    ASSERT_LT(k, 2 * std::max(n, 1));
+    for (int j = 0; j < k; ++j) {
+      const float lo = static_cast<float>(j) / k, hi = static_cast<float>(j + 1) / k;
+      ASSERT_EQ(guide[j], static_cast<float>(interval(lo))) << what << " bucket " << j;
+      for (int m = 0; m <= 16; ++m) {
+        const float u = std::nextafter(lo + (hi - lo) * (m / 16.0f), m == 16 ? 0.0f : 2.0f);
+        const int i = interval(u);
+        ASSERT_LE(guide[j], static_cast<float>(i)) << what << " bucket " << j << " u " << u;
+        ASSERT_GE(guide[j + 1], static_cast<float>(i)) << what << " bucket " << j << " u " << u;
+      }
+    }
+  };
+  check(table, table + env_table_band_guide_offset(w, h), h - 1, "bands");
+  for (int r = 0; r < h; ++r) {
+    check(table + env_table_columns_offset(w, h, r), table + env_table_column_guide_offset(w, h, r), w,
+          "row " + std::to_string(r));
+  }
 }
 
 }  // namespace
