@@ -91,7 +91,7 @@ inline int bsdf_flip_side(const Bsdf* b, float3 wo) {
 }
 
 // f(wo, wi) |cos wi| of the non-delta components (0 for pure delta BSDFs).
-inline float3 bsdf_eval(const Bsdf* b, float3 wo, float3 wi) {
+__attribute__((always_inline)) inline float3 bsdf_eval(const Bsdf* b, float3 wo, float3 wi) {
   wo = normalize_or(wo, (float3)(0.0f));
   wi = normalize_or(wi, (float3)(0.0f));
   if (bsdf_flip_side(b, wo)) {
@@ -122,7 +122,7 @@ inline float3 bsdf_eval(const Bsdf* b, float3 wo, float3 wi) {
 
 // Solid-angle pdf with which bsdf_sample produces wi through its non-delta components,
 // lobe-selection probability included.
-inline float bsdf_pdf(const Bsdf* b, float3 wo, float3 wi) {
+__attribute__((always_inline)) inline float bsdf_pdf(const Bsdf* b, float3 wo, float3 wi) {
   wo = normalize_or(wo, (float3)(0.0f));
   wi = normalize_or(wi, (float3)(0.0f));
   if (bsdf_flip_side(b, wo)) {
@@ -153,7 +153,7 @@ inline float bsdf_pdf(const Bsdf* b, float3 wo, float3 wi) {
 
 // Samples wi from three uniforms (u.x picks the lobe, u.yz the direction). Returns 0 when there
 // is no sample (wrong side of a one-sided BSDF, zero weight, degenerate geometry).
-inline int bsdf_sample(const Bsdf* b, float3 wo, float3 u, BsdfSample* s) {
+__attribute__((always_inline)) inline int bsdf_sample(const Bsdf* b, float3 wo, float3 u, BsdfSample* s) {
   wo = normalize_or(wo, (float3)(0.0f, 0.0f, 0.0f));
   if (dot(wo, wo) == 0.0f) return 0;
   int flip = bsdf_flip_side(b, wo);

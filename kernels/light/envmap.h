@@ -17,10 +17,10 @@ inline float2 envmap_uv(float3 d) {
   float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
   return (float2)(u - floor(u), acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F);
 }
+// theta = pi v, phi = 2 pi u, by sinpi and cospi (no argument reduction by pi).
 inline float3 envmap_direction(float2 uv) {
-  float theta = M_PI_F * uv.y, phi = 2.0f * M_PI_F * uv.x;
-  float sin_theta = sin(theta);
-  return (float3)(sin_theta * sin(phi), cos(theta), -sin_theta * cos(phi));
+  float sin_theta = sinpi(uv.y), phi = 2.0f * uv.x;
+  return (float3)(sin_theta * sinpi(phi), cospi(uv.y), -sin_theta * cospi(phi));
 }
 
 // The four grid samples around (u, v): columns c0, c1 = c0 + 1 (wrapped) with weight fc on c1,

@@ -146,7 +146,7 @@ inline float spot_falloff(__global const GdrLight* l, float3 dir) {
 // at infinity) as seen from p: direction, distance, arriving radiance and pdf. Next-event
 // estimation samples the point first; a gradient-domain offset path reconnects to the same point
 // from its own vertex. Returns 0 when the light cannot contribute.
-inline int light_connect(const SceneData* s, int index, float3 p, LightSample* ls) {
+__attribute__((always_inline)) inline int light_connect(const SceneData* s, int index, float3 p, LightSample* ls) {
   __global const GdrLight* l = &s->lights[index];
   float pmf = light_pmf(s, index);
   ls->delta = 0;
@@ -207,7 +207,7 @@ inline int light_connect(const SceneData* s, int index, float3 p, LightSample* l
 }
 
 // Samples a point on light `index` and evaluates it as seen from p.
-inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
+__attribute__((always_inline)) inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
   int type = s->lights[index].type;
   if (type == LIGHT_AREA) ls->bary = sample_triangle_barycentrics(u);
   if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) ls->wi = environment_sample(s, &s->lights[index], u);

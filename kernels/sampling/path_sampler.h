@@ -49,7 +49,7 @@ inline int sampler_is_primary(const PathSampler* ps) { return ps->primary != 0; 
 // chain's state holds the blocks its paths can read; one past it (never read while the layout
 // matches the path lengths) comes fresh from the generator at each evaluation, which keeps the
 // chain's stationary distribution (the target then is an unbiased estimate, kept with the state).
-inline float4 sampler_block(const PathSampler* ps, uint block) {
+__attribute__((always_inline)) inline float4 sampler_block(const PathSampler* ps, uint block) {
   if (ps->primary != 0) {
     uint i = primary_block_index(block, &ps->layout);
     if (i != RNG_BLOCK_NOT_HELD) {

@@ -14,7 +14,7 @@ typedef struct Surface {
   int light;  // area light of this triangle, or -1
 } Surface;
 
-inline Surface surface_at(const SceneData* s, uint prim, float b1, float b2) {
+__attribute__((always_inline)) inline Surface surface_at(const SceneData* s, uint prim, float b1, float b2) {
   GdrTriangle tri = s->triangles[prim];
   GdrShape shape = s->shapes[tri.shape];
   float b0 = 1.0f - b1 - b2;
