@@ -27,36 +27,6 @@ inline float gaussian_tail(float r, float t) {  // integral over [t, r], 0 <= t 
   return fmax(sigma * sqrt_half_pi * (erfc_t - erfc_cut) - bias * (r - t), 0.0f);
 }
 
-// erfinv(x) for |x| < 1 (Giles, "Approximating the erfinv function", GPU Computing Gems 2011:
-// relative error about 1e-7 in single precision).
-inline float filter_erfinv(float x) {
-  float w = -log((1.0f - x) * (1.0f + x)), p;
-  if (w < 5.0f) {
-    w -= 2.5f;
-    p = 2.81022636e-08f;
-    p = 3.43273939e-07f + p * w;
-    p = -3.5233877e-06f + p * w;
-    p = -4.39150654e-06f + p * w;
-    p = 0.00021858087f + p * w;
-    p = -0.00125372503f + p * w;
-    p = -0.00417768164f + p * w;
-    p = 0.246640727f + p * w;
-    p = 1.50140941f + p * w;
-  } else {
-    w = sqrt(w) - 3.0f;
-    p = -0.000200214257f;
-    p = 0.000100950558f + p * w;
-    p = 0.00134934322f + p * w;
-    p = -0.00367342844f + p * w;
-    p = 0.00573950773f + p * w;
-    p = -0.0076224613f + p * w;
-    p = 0.00943887047f + p * w;
-    p = 1.00167406f + p * w;
-    p = 2.83297682f + p * w;
-  }
-  return p * x;
-}
-
 // Where the gaussian filter's cdf reaches `target`, ignoring its cut at r and its offset (both
 // below 4e-4 of its peak): the start of the Newton steps that invert the filter's own cdf, which
 // then take one or two steps instead of five or more from the centre.
@@ -64,7 +34,7 @@ inline float gaussian_inverse_guess(float r, float target) {
   float sigma = 0.25f * r;
   const float sqrt_half_pi = 1.2533141f;
   float x = clamp(target / (sigma * sqrt_half_pi) - 1.0f, -0.9999999f, 0.9999999f);
-  return sigma * M_SQRT2_F * filter_erfinv(x);
+  return sigma * M_SQRT2_F * erfinv_approx(x);
 }
 
 inline float filter_cdf(int filter, float r, float t) {
