@@ -2,9 +2,13 @@
 // after an intersection each hit is routed by its material's BSDF type, and one kernel per type
 // the scene has shades that type's queue. The kernels are one body specialized per type: the
 // BSDF's type is a constant there (surface_bsdf_of_type), so each kernel holds only its own
-// material's code and no switch over the others. GDR_MATERIAL_QUEUES(X) expands X(name, TYPE)
-// for every type the build selects (a scene build: the scene's types; kernels named
-// <stage>_<name>, the host's MaterialQueues launches them by that name).
+// material's code and no switch over the others, where the constant reaches the switch: PoCL
+// keeps larger functions as calls, so the BSDF's entry points, next-event sampling and the light
+// connection are always_inline (the continuation's sampling stays a call: inlined, G-PT's kernels
+// ran slower).
+// GDR_MATERIAL_QUEUES(X) expands X(name, TYPE) for every type the build selects (a scene build:
+// the scene's types; kernels named <stage>_<name>, the host's MaterialQueues launches them by
+// that name).
 #pragma once
 #include "path/scene.h"
 
