@@ -33,7 +33,8 @@ inline void write_ray_hit(__global GdrRayHit* r, float3 o, float3 d, float tnear
 
 // A ray from surface point p (geometric normal ng) toward point q, starting off the surface on
 // the side it leaves and stopping just short of q, so neither end occludes it.
-__attribute__((always_inline)) inline void write_segment_ray(__global GdrRay* r, float3 p, float3 ng, float3 q, uint id) {
+__attribute__((always_inline)) inline void write_segment_ray(__global GdrRay* r, float3 p, float3 ng, float3 q,
+                                                              uint id) {
   float3 d = q - p;
   float3 o = leaving_origin(p, ng, d);
   float3 to_q = q - o;

@@ -122,18 +122,20 @@ __attribute__((always_inline)) inline void gpt_shade_group(
         float p_light = last_specular ? 0.0f : p_env;
 #endif
         for (int k = 0; k < GPT_OFFSETS; ++k) {
-          // A traced offset escaped along its own direction; a joined one along the base's.
-          float3 d_off = o[k].mode == GPT_MODE_TRACE ? vload3(0, o[k].dir) : dir;
+          // A traced offset escaped along its own direction; a joined one along the base's, and
+          // sees the base's radiance (and pdf).
+          int own = o[k].mode == GPT_MODE_TRACE;
+          float3 d_off = own ? vload3(0, o[k].dir) : dir;
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
           int alive = offset_alive(&o[k]);
           float2 others_y = alive ? GPT_EMISSION_OTHERS(escaped, &s, d_off, &o[k].mis) : (float2)(0.0f);
-          float3 le_off = o[k].mode == GPT_MODE_TRACE ? escaped_radiance(&s, d_off) : le;
+          float3 le_off = own ? escaped_radiance(&s, d_off) : le;
           float3 c_off = alive ? vload3(0, o[k].throughput) * le_off : (float3)(0.0f);
           add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
                    nonfinite);
 #else
           float q_env = p_env;
-          float3 le_off = o[k].mode == GPT_MODE_TRACE ? environment_eval(&s, d_off, &q_env) : le;
+          float3 le_off = own ? environment_eval(&s, d_off, &q_env) : le;
           float q_off = o[k].last_delta ? 0.0f : q_env;
           add_bsdf_emission(acc, st->pixel, k, &o[k], p_bsdf, p_light, beta * le, le_off, q_off, nonfinite);
 #endif

@@ -207,7 +207,8 @@ __attribute__((always_inline)) inline int light_connect(const SceneData* s, int 
 }
 
 // Samples a point on light `index` and evaluates it as seen from p.
-__attribute__((always_inline)) inline int light_sample(const SceneData* s, int index, float3 p, float2 u, LightSample* ls) {
+__attribute__((always_inline)) inline int light_sample(const SceneData* s, int index, float3 p, float2 u,
+                                                       LightSample* ls) {
   int type = s->lights[index].type;
   if (type == LIGHT_AREA) ls->bary = sample_triangle_barycentrics(u);
   if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) ls->wi = environment_sample(s, &s->lights[index], u);

@@ -14,8 +14,9 @@ inline int nee_applies(const SceneData* s, const Bsdf* b) { return s->light_coun
 // Samples *light and a point on it (*ls) for the vertex su at `depth`, with the direction in su's
 // shading frame. Returns 0 when there is no usable sample (also when the normals disagree on the
 // side of the direction).
-__attribute__((always_inline)) inline int nee_sample(const SceneData* s, const PathSampler* ps, int depth, const Surface* su, const Frame* frame,
-                      int* light, LightSample* ls, float3* wi_local) {
+__attribute__((always_inline)) inline int nee_sample(const SceneData* s, const PathSampler* ps, int depth,
+                                                     const Surface* su, const Frame* frame, int* light,
+                                                     LightSample* ls, float3* wi_local) {
   float4 ul = sampler_block(ps, RNG_BLOCK_LIGHT(depth));
   *light = light_select(s, ul.x);
   if (!light_sample(s, *light, su->p, ul.yz, ls)) return 0;

@@ -23,10 +23,16 @@ inline int env_table_weights_offset(int width, int height, int row) {
   return env_table_columns_offset(width, height, height) + row * width;
 }
 
+// The smallest power of two >= intervals (>= 1), by smearing the highest bit of intervals - 1:
+// no loop in the kernels, which ask for it at every sample.
 inline int env_table_guide_buckets(int intervals) {
-  int k = 1;
-  while (k < intervals) k *= 2;
-  return k;
+  unsigned k = (unsigned)(intervals - 1);
+  k |= k >> 1;
+  k |= k >> 2;
+  k |= k >> 4;
+  k |= k >> 8;
+  k |= k >> 16;
+  return (int)(k + 1u);
 }
 
 inline int env_table_band_guide_offset(int width, int height) {
