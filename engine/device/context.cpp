@@ -130,9 +130,11 @@ std::shared_ptr<Program> Context::program(const std::string& root, const Defines
     if (err != CL_SUCCESS) {
       clReleaseProgram(program);
       throw DeviceError("building kernels/" + root + " (" + options + ") on " + device_.name +
-                        " failed:\n" + build_log);
+                        " failed:\n" + name_resolved_lines(build_log, source));
     }
-    if (build_log.find("warning") != std::string::npos) log::verbose("kernels/", root, ": ", build_log);
+    if (build_log.find("warning") != std::string::npos) {
+      log::verbose("kernels/", root, ": ", name_resolved_lines(build_log, source));
+    }
     if (stats_) stats_->add_count("kernel_cache/misses");
     cache.store(program);
   }

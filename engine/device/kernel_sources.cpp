@@ -1,6 +1,7 @@
 #include "device/kernel_sources.h"
 
 #include <filesystem>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -79,6 +80,32 @@ std::string resolve_kernel_source(const std::string& root) {
   std::ostringstream out;
   expand(normalize(root), included, out);
   return out.str();
+}
+
+std::string name_resolved_lines(const std::string& log, const std::string& resolved) {
+  // The original place of each resolved line, from the #line markers: places[n - 1] for line n.
+  std::vector<std::string> places;
+  std::istringstream in(resolved);
+  std::string line, file = "<kernel>";
+  long next = 1;
+  static const std::regex marker(R"re(^#line (\d+) "([^"]*)"\s*$)re");
+  for (std::smatch m; std::getline(in, line);) {
+    places.push_back(file + ":" + std::to_string(next++));
+    if (std::regex_match(line, m, marker)) {
+      next = std::stol(m[1].str());
+      file = m[2].str();
+    }
+  }
+  static const std::regex place(R"(<kernel>:(\d+):)");
+  std::string out;
+  auto from = log.cbegin();
+  for (std::sregex_iterator it(log.begin(), log.end(), place), end; it != end; ++it) {
+    const size_t n = std::stoul((*it)[1].str());
+    out.append(from, (*it)[0].first);
+    out += (n >= 1 && n <= places.size() ? places[n - 1] : "<kernel>:" + std::to_string(n)) + ":";
+    from = (*it)[0].second;
+  }
+  return out.append(from, log.cend());
 }
 
 }  // namespace gdr

@@ -19,4 +19,9 @@ const std::vector<EmbeddedKernelFile>& embedded_kernel_files();
 // compiler messages name the original file and line. Throws gdr::Error for a missing file.
 std::string resolve_kernel_source(const std::string& root);
 
+// A build log with every place given as a line of the resolved text ("<kernel>:4369:35:", as
+// compilers that ignore #line write it, NVIDIA's among them) named by its original file and line
+// ("kernels/gpt/shade.h:33:35:"). Places already named by file stay as they are.
+std::string name_resolved_lines(const std::string& log, const std::string& resolved);
+
 }  // namespace gdr

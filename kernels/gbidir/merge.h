@@ -46,11 +46,12 @@ inline float2 gvcm_merge_others(float2 pdfs, float y_dvcm, float y_dvm, const Gd
   return (float2)(light + mis_merge_side(z->dvcm, z->dvm, pdfs.y, o),
                   light + mis_merge_side(all_dvcm, all_dvm, pdfs.y, o));
 }
-#define MERGE_PDFS(...) gvcm_merge_pdfs(__VA_ARGS__)
-#define MERGE_OTHERS(...) gvcm_merge_others(__VA_ARGS__)
-#else
-#define MERGE_PDFS(...) ((float2)(0.0f))
-#define MERGE_OTHERS(...) ((float2)(0.0f))
+#define MERGE_PDFS(b, f, wo_l, wi) gvcm_merge_pdfs(b, f, wo_l, wi)
+#define MERGE_OTHERS(pdfs, y_dvcm, y_dvm, z, all_dvcm, all_dvm, o) \
+  gvcm_merge_others(pdfs, y_dvcm, y_dvm, z, all_dvcm, all_dvm, o)
+#else  // fixed arities: NVIDIA's OpenCL compiler refuses variadic macros
+#define MERGE_PDFS(b, f, wo_l, wi) ((float2)(0.0f))
+#define MERGE_OTHERS(pdfs, y_dvcm, y_dvm, z, all_dvcm, all_dvm, o) ((float2)(0.0f))
 #endif
 
 // A photon of light depth `light_depth` merges at a camera vertex `camera_depth` segments from the

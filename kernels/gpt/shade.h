@@ -26,11 +26,13 @@
 
 // The "others" of the strategy that found emission, of the base (x) and of the offset (y): G-BDPT's
 // from the bidirectional sums; G-PM's subpaths see emission through delta vertices only, by one
-// strategy, so none.
+// strategy, so none. (Fixed arities: NVIDIA's OpenCL compiler refuses variadic macros.)
 #if defined(GDR_GPM)
-#define GPT_EMISSION_OTHERS(what, ...) ((float2)(0.0f))
+#define GPT_ESCAPED_EMISSION_OTHERS(s, dir, m) ((float2)(0.0f))
+#define GPT_SURFACE_EMISSION_OTHERS(s, su, wo, m) ((float2)(0.0f))
 #else
-#define GPT_EMISSION_OTHERS(what, ...) gbdpt_##what##_emission_others(__VA_ARGS__)
+#define GPT_ESCAPED_EMISSION_OTHERS(s, dir, m) gbdpt_escaped_emission_others(s, dir, m)
+#define GPT_SURFACE_EMISSION_OTHERS(s, su, wo, m) gbdpt_surface_emission_others(s, su, wo, m)
 #endif
 
 // Emission found by BSDF sampling, for the pair (base, offset k): the base's contribution c_base
@@ -117,7 +119,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
         acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
       } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
-        float2 others_x = GPT_EMISSION_OTHERS(escaped, &s, dir, &base.mis);
+        float2 others_x = GPT_ESCAPED_EMISSION_OTHERS(&s, dir, &base.mis);
 #else
         float p_light = last_specular ? 0.0f : p_env;
 #endif
@@ -128,7 +130,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
           float3 d_off = own ? vload3(0, o[k].dir) : dir;
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
           int alive = offset_alive(&o[k]);
-          float2 others_y = alive ? GPT_EMISSION_OTHERS(escaped, &s, d_off, &o[k].mis) : (float2)(0.0f);
+          float2 others_y = alive ? GPT_ESCAPED_EMISSION_OTHERS(&s, d_off, &o[k].mis) : (float2)(0.0f);
           float3 le_off = own ? escaped_radiance(&s, d_off) : le;
           float3 c_off = alive ? vload3(0, o[k].throughput) * le_off : (float3)(0.0f);
           add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
@@ -188,14 +190,14 @@ __attribute__((always_inline)) inline void gpt_shade_group(
       acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
     } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
-      float2 others_x = GPT_EMISSION_OTHERS(surface, &s, &su, wo, &base.mis);
+      float2 others_x = GPT_SURFACE_EMISSION_OTHERS(&s, &su, wo, &base.mis);
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         int alive = offset_alive(&o[k]);
         float3 c_off = (float3)(0.0f);
         float2 others_y = (float2)(0.0f);
         if (alive && so[k].light >= 0) {
           c_off = vload3(0, o[k].throughput) * surface_radiance(&s, &so[k], wo_off[k]);
-          others_y = GPT_EMISSION_OTHERS(surface, &s, &so[k], wo_off[k], &o[k].mis);
+          others_y = GPT_SURFACE_EMISSION_OTHERS(&s, &so[k], wo_off[k], &o[k].mis);
         }
         add_pair(acc, st->pixel, k, gbdpt_pair_weights(others_x, others_y, o[k].ratio, alive), beta * le, c_off,
                  nonfinite);

@@ -54,10 +54,17 @@ inline CliResult run_shell(const std::string& cmd) {
   return r;
 }
 
+// The gdrender the tests start: this build's, or $GDR_TEST_GDRENDER (a packed copy started
+// through its own loader, as scripts/gpu-check runs it on a machine without the build).
+inline std::string gdrender_exe() {
+  const char* exe = std::getenv("GDR_TEST_GDRENDER");
+  return exe && *exe ? exe : GDR_GDRENDER_EXE;
+}
+
 // Runs `gdrender ARGS` with `dir` as the working folder. ARGS is shell syntax. A run that hangs
 // is stopped after 60 s (exit code 124).
 inline CliResult run_gdrender(const std::string& args, const TempDir& dir) {
-  return run_shell("cd '" + dir.path().string() + "' && timeout 60 '" + GDR_GDRENDER_EXE + "' " + args + " 2>&1");
+  return run_shell("cd '" + dir.path().string() + "' && timeout 60 '" + gdrender_exe() + "' " + args + " 2>&1");
 }
 
 // Files in `dir` whose name ends with `suffix`.

@@ -30,7 +30,7 @@ namespace {
 CliResult run_with(const std::string& args, const TempDir& dir, const std::string& env, const std::string& limit,
                    int seconds) {
   return run_shell("cd '" + dir.path().string() + "' && " + limit + "env " + env + " timeout " +
-                   std::to_string(seconds) + " '" + GDR_GDRENDER_EXE + "' " + args + " 2>&1");
+                   std::to_string(seconds) + " '" + gdrender_exe() + "' " + args + " 2>&1");
 }
 
 // For runs that fail while loading: the address space capped at 8 GiB.

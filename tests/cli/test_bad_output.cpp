@@ -64,7 +64,7 @@ CliResult run_sh(const std::string& script, const TempDir& dir) {
   return run_shell("cd '" + dir.path().string() + "' && " + script);
 }
 
-const std::string kExe = std::string("'") + GDR_GDRENDER_EXE + "'";
+const std::string kExe = "'" + gdrender_exe() + "'";
 
 bool is_exr(const std::string& path) {
   try {
@@ -284,7 +284,7 @@ class Background {
       int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
       std::vector<char*> argv;
-      std::string exe = GDR_GDRENDER_EXE;
+      std::string exe = gdrender_exe();
       argv.push_back(exe.data());
       std::vector<std::string> copy = args;
       for (std::string& a : copy) argv.push_back(a.data());

@@ -31,7 +31,7 @@ CliResult run_mpi(int ranks, const std::string& args, const TempDir& dir) {
                    std::to_string(ranks) + " --oversubscribe --bind-to none " + args + " 2>&1");
 }
 
-std::string gdrender() { return std::string("'") + GDR_GDRENDER_EXE + "'"; }
+std::string gdrender() { return "'" + gdrender_exe() + "'"; }
 
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);

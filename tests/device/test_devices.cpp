@@ -1,7 +1,10 @@
 // The device layer: enumeration, selection, program builds, and a real kernel on every device.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <regex>
+#include <string>
 
 #include "device/context.h"
 #include "device/devices.h"
@@ -10,6 +13,18 @@
 
 namespace gdr {
 namespace {
+
+std::string find_embedded(const std::string& path) {
+  for (const EmbeddedKernelFile& f : embedded_kernel_files()) {
+    if (f.path == path) return f.text;
+  }
+  return {};
+}
+
+// The 1-based line of a text at which offset `at` lies.
+size_t line_of(const std::string& text, size_t at) {
+  return size_t(std::count(text.begin(), text.begin() + std::min(at, text.size()), '\n')) + 1;
+}
 
 TEST(Devices, AtLeastOneOpenClDeviceExists) {
   std::vector<DeviceInfo> devices = list_devices();
@@ -49,6 +64,28 @@ TEST(KernelSources, IncludesAreInlinedWithLineMarkers) {
   EXPECT_NE(text.find("philox4x32_10"), std::string::npos);
   EXPECT_NE(text.find("#line 1 \"kernels/core/rng.h\""), std::string::npos);
   EXPECT_THROW(resolve_kernel_source("no/such/file.cl"), Error);
+}
+
+// Compilers that ignore #line (NVIDIA's) name places by the line of the whole resolved text.
+TEST(KernelSources, ResolvedLinesAreNamedByTheirFile) {
+  const std::string text = resolve_kernel_source("util/rng_fill.cl");
+  const std::string rng = find_embedded("core/rng.h");
+  const std::string definition = "inline uint4 philox4x32_10(";
+  ASSERT_NE(rng.find(definition), std::string::npos);
+  const size_t resolved_line = line_of(text, text.find(definition));
+  const size_t original_line = line_of(rng, rng.find(definition));
+  const std::string log = "<kernel>:" + std::to_string(resolved_line) + ":1: error: x\n<kernel>:999999:2: note";
+  EXPECT_EQ(name_resolved_lines(log, text),
+            "kernels/core/rng.h:" + std::to_string(original_line) + ":1: error: x\n<kernel>:999999:2: note");
+  EXPECT_EQ(name_resolved_lines("kernels/core/rng.h:3:1: error", text), "kernels/core/rng.h:3:1: error");
+}
+
+// NVIDIA's OpenCL compiler refuses variadic macros, which PoCL's accepts: none may creep in.
+TEST(KernelSources, NoVariadicMacros) {
+  const std::regex variadic(R"(#\s*define\s+\w+\([^)]*\.\.\.\s*\))");
+  for (const EmbeddedKernelFile& f : embedded_kernel_files()) {
+    EXPECT_FALSE(std::regex_search(f.text, variadic)) << "kernels/" << f.path << " defines a variadic macro";
+  }
 }
 
 TEST(KernelBuild, CompileErrorNamesFileAndLine) {
