@@ -1,7 +1,8 @@
 // Persistent cache of built program binaries, keyed by device, driver, build options and the
 // resolved source text. Folder: $GDR_KERNEL_CACHE_DIR, else $XDG_CACHE_HOME/gdrender/kernels,
-// else ~/.cache/gdrender/kernels. GDR_KERNEL_CACHE=off disables it. Each entry carries its size
-// and a checksum: a truncated or corrupt entry is removed and the program rebuilt.
+// else ~/.cache/gdrender/kernels. GDR_KERNEL_CACHE=off disables it; on PoCL, which caches its own
+// builds, it is used only with GDR_KERNEL_CACHE=on. Each entry carries its size and a checksum: a
+// truncated or corrupt entry is removed and the program rebuilt.
 #pragma once
 #include <CL/cl.h>
 

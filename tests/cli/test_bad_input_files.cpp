@@ -165,7 +165,7 @@ TEST_F(BadInputKernelCache, TruncatedCorruptOrOldEntriesAreRemovedNotReturned) {
 TEST(BadInputFiles, CorruptBadInputKernelCacheAreRebuiltNotHandedToTheDriver) {
   TempDir dir;
   std::filesystem::create_directories(dir.path() / "cache");
-  const std::string env = "GDR_KERNEL_CACHE_DIR=cache";
+  const std::string env = "GDR_KERNEL_CACHE_DIR=cache GDR_KERNEL_CACHE=on";  // on PoCL too
   const std::string args = "'" + source_scene("cornell-box.xml") + "' -D res=8 --spp 1 --quiet -o out.exr";
   CliResult first = run_gdrender_env(args, dir, env);
   ASSERT_EQ(first.code, 0) << first.output;
