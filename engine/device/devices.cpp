@@ -51,6 +51,10 @@ DeviceError no_match(const std::string& why, const std::vector<DeviceInfo>& devi
 
 }  // namespace
 
+bool is_pocl(const DeviceInfo& device) {
+  return device.platform_name.find("Portable Computing Language") != std::string::npos;
+}
+
 std::vector<DeviceInfo> list_devices() {
   std::vector<DeviceInfo> out;
   cl_uint nplatforms = 0;

@@ -23,6 +23,9 @@ struct DeviceInfo {
   bool host_unified = false;  // CL_DEVICE_HOST_UNIFIED_MEMORY: the device works in the host's memory
 };
 
+// Whether the device is PoCL's (which caches its own builds and runs on the host's cores).
+bool is_pocl(const DeviceInfo& device);
+
 // All devices of all platforms; an empty list when there is no OpenCL platform at all.
 std::vector<DeviceInfo> list_devices();
 

@@ -22,7 +22,7 @@ bool cache_wanted(const DeviceInfo& device) {
   const char* setting = std::getenv("GDR_KERNEL_CACHE");
   const std::string mode = setting ? setting : "";
   if (mode == "off") return false;
-  return mode == "on" || device.platform_name.find("Portable Computing Language") == std::string::npos;
+  return mode == "on" || !is_pocl(device);
 }
 
 std::string cache_dir() {
