@@ -132,8 +132,8 @@ std::shared_ptr<Program> Context::program(const std::string& root, const Defines
       throw DeviceError("building kernels/" + root + " (" + options + ") on " + device_.name +
                         " failed:\n" + name_resolved_lines(build_log, source));
     }
-    if (build_log.find("warning") != std::string::npos) {
-      log::verbose("kernels/", root, ": ", name_resolved_lines(build_log, source));
+    if (log::level() >= log::Level::Verbose && build_log.find("warning") != std::string::npos) {
+      log::verbose("kernels/", root, ": ", name_resolved_lines(build_log, source));  // mapped only when shown
     }
     if (stats_) stats_->add_count("kernel_cache/misses");
     cache.store(program);

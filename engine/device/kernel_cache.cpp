@@ -15,9 +15,8 @@ namespace gdr {
 namespace {
 
 // PoCL caches its own builds (in POCL_CACHE_DIR) and, asked for a program's binary, first compiles
-// every kernel of the program for any work-group size: storing one made a program's first build
-// twice as long (gvcm on the caustics box: 28 s against 12 s; a cold test suite subset 310 s
-// against 191 s) for a warm start 0.3 s shorter. So its programs are not stored unless asked for.
+// every kernel of the program for any work-group size, which doubles a first build to shorten a
+// warm start a little (README gives the figures): its programs are stored only when asked for.
 bool cache_wanted(const DeviceInfo& device) {
   const char* setting = std::getenv("GDR_KERNEL_CACHE");
   const std::string mode = setting ? setting : "";
