@@ -35,6 +35,7 @@
 #include "bidir/strategies.h"
 #include "bidir/subpath_mis.h"
 #include "shared/bidir_types.h"
+#include "shared/manifold_types.h"
 #include "shared/ray_types.h"
 #include "wavefront/counter_shard.h"
 #include "wavefront/group_reserve.h"
@@ -178,14 +179,17 @@ __kernel void bidir_emit(GdrPtParams params, GdrBidirOptions opts, __global GdrR
 }
 
 // A light subpath's new vertex: under bdpt it joins the light-vertex store (vertex j of subpath
-// `slot` at store[j * stride + slot]); its connection to the camera (a splat in the path's slot,
+// `slot` at store[j * stride + slot]), or, a delta vertex, its point is kept where the caller asks
+// (the vertex k bounces from the light at delta_points[(k - 1) * stride + slot], for k up to
+// delta_depths: G-PM's manifold photon shift, gbidir/photon_chain.h); its connection to the camera (a splat in the path's slot,
 // the vertex it came from in seen[slot] for the gradient integrators' shifts, and a shadow ray
 // toward the camera); its continuation by importance transport.
 __attribute__((always_inline)) inline void bidir_light_shade_one(
     GdrPtParams params, GdrBidirOptions opts, uint q, uint stride, __global const GdrCamera* camera,
     __global const GdrRayHit* rays_in, __global const uint* queue_in, __global GdrSplat* splats,
     __global GdrBidirVertex* seen, __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
-    __global uint* stats, BidirAppend* out, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
+    __global GdrManifoldPoint* delta_points, uint delta_depths, __global uint* stats, BidirAppend* out,
+    PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   GdrRayHit rh = rays_in[q];
   if (rh.hit.geomID == GDR_INVALID_ID) return;
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
@@ -208,6 +212,10 @@ __attribute__((always_inline)) inline void bidir_light_shade_one(
   if (!sides_agree(wo, su.ng, wo_local.z)) return;
   mis_arrive(rh.ray.tfar, fabs(dot(su.ng, wo)), opts.mis, &st);
   int delta = bsdf_is_delta(&b);
+  if (delta && (uint)k <= delta_depths) {
+    GdrManifoldPoint at = {rh.hit.primID, rh.hit.u, rh.hit.v};
+    delta_points[(uint)(k - 1) * stride + slot] = at;
+  }
 
   // Kept for connections (a camera vertex and the connection make two more segments at least) and
   // for merging (a camera vertex, one more).
@@ -254,6 +262,7 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
                                 __global const uint* queue_in, __global GdrRayHit* rays_out, __global uint* queue_out,
                                 __global GdrRay* shadow_rays, __global GdrSplat* splats, __global GdrBidirVertex* seen,
                                 __global GdrBidirPathState* paths, __global GdrBidirVertex* store,
+                                __global GdrManifoldPoint* delta_points, uint delta_depths,
                                 __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   __local uint scratch[GROUP_RESERVE_SCRATCH];
   uint q = get_global_id(0);
@@ -261,7 +270,8 @@ __kernel void bidir_light_shade(GdrPtParams params, GdrBidirOptions opts, uint c
   bidir_append_none(&out);
   if (q < count) {
     bidir_light_shade_one(params, opts, q, stride, camera, rays_in, queue_in, splats, seen, paths, store,
-                          counter_shard(counters), &out, PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
+                          delta_points, delta_depths, counter_shard(counters), &out, PRIMARY_SAMPLE_NAMES,
+                          SCENE_DATA_NAMES);
   }
   uint slots[3];
   bidir_append(scratch, counters, &out, shadow_rays, 0, queue_out, rays_out, slots);

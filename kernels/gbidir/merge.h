@@ -13,7 +13,13 @@
 // at the base's vertex merge the same photon, and base and offset share G-VCM's weight over every
 // strategy of both paths (gbidir/weights.h), the offset photon's light-side sums re-aimed with it
 // (photon_shift_sums).
-// All three walk the photons in the same order (bidir/photon_query.h). A slice of the groups at a
+// Where gpm walks (GDR_GPM with GDR_MANIFOLD: --shift manifold), a photon whose parent is a delta
+// vertex is shifted by the manifold photon shift (gbidir/photon_chain.h): its ray leaves the chain's
+// last vertex, and a fourth launch between Embree and gpm_merge,
+//   gpm_photon_walks  for each of them that found a photon within the offset's radius, the walk
+//                     (walk_of[ray] its index, GPM_NO_WALK for none), which the host's manifold
+//                     stage solves before gpm_merge reads them.
+// All of them walk the photons in the same order (bidir/photon_query.h). A slice of the groups at a
 // time: [first, first + count) of `connectable`, its rays from starts[first] on (rays past the
 // buffer's capacity are not traced: their shifts fail).
 #pragma once
@@ -24,7 +30,15 @@
 #include "path/film.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
+#include "shared/manifold_types.h"
+#include "shift/delta_lobe.h"  // before the block below: the sources are joined once per file
 #include "wavefront/counter_shard.h"
+#if defined(GDR_GPM) && defined(GDR_MANIFOLD)
+#define GPM_PHOTON_WALKS 1
+#include "gbidir/photon_chain.h"
+#endif
+
+#define GPM_NO_WALK 0xffffffffu
 
 // Whether an offset's merge point is a vertex of its own (the photon is shifted there): G-PM's
 // visible points all are; G-VCM's offsets at a glossy vertex of their own too (a merge ends the
@@ -88,7 +102,8 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
                              __global const uint* connectable, __global const GbdptCameraVertex* records,
                              __global const GdrBidirVertex* store, __global const float4* points,
                              __global const uint* starts, __global const uint* sorted, uint buckets,
-                             __global const GdrLightOrigin* origins, uint stride, __global const uint* ray_starts,
+                             __global const GdrLightOrigin* origins, __global const GdrManifoldPoint* delta_points,
+                             uint delta_depths, uint stride, __global const uint* ray_starts,
                              __global GdrRayHit* rays, uint ray_capacity, SCENE_DATA_ARGS) {
   uint q = first + get_global_id(0);
   if (q >= first + count) return;
@@ -108,13 +123,24 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
     GdrBidirVertex y = store[e];
     if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
-    PhotonParent pa;
-    pa.kind = GPM_PARENT_NONE;
-    if (shifting) pa = photon_parent(&s, store, origins, stride, e, &y);
+    PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
+    int chained = 0;
+#if defined(GPM_PHOTON_WALKS)
+    PhotonChain ch;
+    int reason;
+    chained = pa.kind == GPM_PARENT_NONE &&
+              photon_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch, &reason);
+#endif
     for (int k = 0; k < GPT_OFFSETS && r < ray_capacity; ++k, ++r) {
       float3 target;
-      if (merge_own_point(rec.state[k]) && pa.kind != GPM_PARENT_NONE &&
+      if (merge_own_point(rec.state[k]) && (pa.kind != GPM_PARENT_NONE || chained) &&
           photon_shift_target(sx.p, sx.ns, so[k].p, so[k].ns, points[e].xyz, &target)) {
+#if defined(GPM_PHOTON_WALKS)
+        if (chained) {
+          photon_chain_ray(&s, &rays[r], &ch, target, r);
+          continue;
+        }
+#endif
         photon_shift_ray(&rays[r], &pa, target, r);
       } else {
         photon_no_ray(&rays[r], r);
@@ -123,13 +149,70 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   }
 }
 
+#if defined(GPM_PHOTON_WALKS)
+__kernel void gpm_photon_walks(GdrGptParams params, GdrBidirOptions opts, uint first, uint count,
+                               __global const uint* connectable, __global const GbdptCameraVertex* records,
+                               __global const GdrBidirVertex* store, __global const float4* points,
+                               __global const uint* starts, __global const uint* sorted, uint buckets,
+                               __global const GdrLightOrigin* origins, __global const GdrManifoldPoint* delta_points,
+                               uint delta_depths, uint stride, __global const uint* ray_starts,
+                               __global const GdrRayHit* rays, uint ray_capacity, __global uint* walk_of,
+                               __global GdrManifoldWalk* walks, __global uint* counters, SCENE_DATA_ARGS) {
+  uint q = first + get_global_id(0);
+  if (q >= first + count) return;
+  SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  GbdptCameraVertex rec = records[connectable[q]];
+  Surface so[GPT_OFFSETS];
+  int shifting = 0;
+  for (int k = 0; k < GPT_OFFSETS; ++k) {
+    if (!merge_own_point(rec.state[k])) continue;
+    so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
+    shifting = 1;
+  }
+  if (!shifting) return;
+  float r2 = opts.radius * opts.radius;
+  uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
+  PhotonQuery pq = photon_query(surface_at(&s, rec.base.prim, rec.base.u, rec.base.v).p, opts.radius, buckets);
+  while (photon_query_next(&pq, starts, sorted, points, &e)) {
+    GdrBidirVertex y = store[e];
+    if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
+    PhotonChain ch;
+    int reason;
+    if (photon_parent(&s, store, origins, stride, e, &y).kind != GPM_PARENT_NONE ||
+        !photon_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch, &reason)) {
+      r += GPT_OFFSETS;
+      continue;
+    }
+    for (int k = 0; k < GPT_OFFSETS && r < ray_capacity; ++k, ++r) {
+      uint w = GPM_NO_WALK;
+      GdrRayHit h = rays[r];
+      if (merge_own_point(rec.state[k]) && h.hit.geomID != GDR_INVALID_ID) {
+        float3 o = (float3)(h.ray.org_x, h.ray.org_y, h.ray.org_z), d = (float3)(h.ray.dir_x, h.ray.dir_y, h.ray.dir_z);
+        GdrManifoldPoint at = manifold_refine_hit(&s, h.hit.primID, o, d);
+        float3 d2 = manifold_point_on(&s, at) - so[k].p;
+        if (dot(d2, d2) <= r2) {
+          // One walk a ray at most: the buffer holds as many walks as rays.
+          w = atomic_inc(&counters[GPT_COUNTER_MANIFOLD_WALKS]);
+          GdrManifoldPoint origin = {y.prim, y.u, y.v};
+          walks[w] = photon_chain_walk(&s, &ch, origin, at, r);
+        }
+      }
+      walk_of[r] = w;
+    }
+  }
+}
+#endif
+
 __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, uint count,
                         __global const uint* connectable, __global const GbdptCameraVertex* records,
                         __global const GptBaseState* bases, __global const GdrBidirVertex* store,
                         __global const float4* points, __global const uint* starts, __global const uint* sorted,
-                        uint buckets, __global const GdrLightOrigin* origins, uint stride,
+                        uint buckets, __global const GdrLightOrigin* origins,
+                        __global const GdrManifoldPoint* delta_points, uint delta_depths, uint stride,
                         __global const uint* ray_starts, __global const GdrRayHit* rays, uint ray_capacity,
-                        __global float4* acc, __global uint* counters, SCENE_DATA_ARGS) {
+                        __global const uint* walk_of, __global const GdrManifoldWalk* walks,
+                        __global const GdrManifoldResult* walk_results, __global float4* acc,
+                        __global uint* counters, SCENE_DATA_ARGS) {
   uint q = first + get_global_id(0);
   if (q >= first + count) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -178,7 +261,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   float3 sum_base[GPT_OFFSETS], sum_off[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) sum_base[k] = sum_off[k] = (float3)(0.0f);
   // Counted per group, one atomic each at the end (not one per photon on one counter).
-  uint r = 4u * (ray_starts[q] - ray_starts[first]), e, merged = 0, orphans = 0, lost = 0;
+  uint r = 4u * (ray_starts[q] - ray_starts[first]), e, merged = 0, orphans = 0, lost = 0, walked = 0, unwalked = 0,
+       long_chains = 0;
   float r2 = opts.radius * opts.radius;
   PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
@@ -197,10 +281,20 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
     PhotonParent pa;
     pa.kind = GPM_PARENT_NONE;
     Surface sy;
+    int chained = 0;
+#if defined(GPM_PHOTON_WALKS)
+    PhotonChain ch;
+#endif
     if (opened) {
       pa = photon_parent(&s, store, origins, stride, e, &y);
-      if (pa.kind == GPM_PARENT_NONE) orphans += (uint)opened;
-      else sy = surface_at(&s, y.prim, y.u, y.v);
+      int reason = GPT_COUNTER_FAIL_PHOTON_PARENT;
+#if defined(GPM_PHOTON_WALKS)
+      chained = pa.kind == GPM_PARENT_NONE &&
+                photon_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch, &reason);
+#endif
+      if (pa.kind != GPM_PARENT_NONE || chained) sy = surface_at(&s, y.prim, y.u, y.v);
+      else if (reason == GPT_COUNTER_FAIL_CHAIN_LONG) long_chains += (uint)opened;
+      else orphans += (uint)opened;
     }
     for (int k = 0; k < GPT_OFFSETS; ++k) {
       // The offset's merge: its value co, its pdf ratio to the base's and its "others".
@@ -247,6 +341,30 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
         }
         lost += !formed;
       }
+#if defined(GPM_PHOTON_WALKS)
+      else if (own[k] && chained) {
+        // The walk gpm_photon_walks started for this ray, if the ray found a photon in the radius.
+        uint wi = r0 + (uint)k < ray_capacity ? walk_of[r0 + (uint)k] : GPM_NO_WALK;
+        if (wi != GPM_NO_WALK) {
+          GdrManifoldResult res = walk_results[wi];
+          GdrManifoldWalk W = walks[wi];
+          Surface sy2 = surface_at(&s, W.start.prim, W.start.b1, W.start.b2);
+          float3 phi2, wi2;
+          float photon_ratio;
+          if (res.status == 0 && res.g_walk > 0.0f && res.g_origin > 0.0f &&
+              photon_chain_eval(&s, &ch, &W, &res, &sy, &sy2, phi, &phi2, &photon_ratio, &wi2)) {
+            co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
+                 photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
+            formed = max3(co) > 0.0f;
+            ratio = rec.ratio[k] * photon_ratio;
+          }
+          walked += formed;
+          unwalked += !formed;
+        } else {
+          lost += 1;
+        }
+      }
+#endif
       float2 w = gbdpt_pair_weights(ox, oy, ratio, formed);
       sum_base[k] += w.x * cb;
       if (formed) sum_off[k] += w.y * co;
@@ -254,6 +372,9 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   }
   if (orphans) atomic_add(&stats[GPT_COUNTER_FAIL_PHOTON_PARENT], orphans);
   if (lost) atomic_add(&stats[GPT_COUNTER_FAIL_PHOTON_LOST], lost);
+  if (walked) atomic_add(&stats[GPT_COUNTER_SHIFT_MANIFOLD], walked);
+  if (unwalked) atomic_add(&stats[GPT_COUNTER_FAIL_MANIFOLD], unwalked);
+  if (long_chains) atomic_add(&stats[GPT_COUNTER_FAIL_CHAIN_LONG], long_chains);
   if (merged == 0) return;
   atomic_add(&stats[GPT_COUNTER_MERGES], merged);
   for (int k = 0; k < GPT_OFFSETS; ++k) {

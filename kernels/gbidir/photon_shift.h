@@ -12,8 +12,8 @@
 // (the measure of the photon's surface seen from p) and w, w' the directions from p. A light at
 // infinity sends the photon along the same direction from a point of its disc moved with it, the
 // ray coming from outside the scene: its G is the cosine at the photon alone (F and pdf are the
-// same for both). A parent on a delta surface (the manifold walk the reference takes there is not
-// done) refuses the shift.
+// same for both). A parent on a delta surface refuses this shift: the manifold photon shift
+// (gbidir/photon_chain.h) takes such photons where it is compiled in.
 #pragma once
 #include "bidir/subpath_mis.h"
 #include "bsdf/transport.h"
@@ -40,6 +40,33 @@ typedef struct PhotonParent {
   float dvcm, dvc, dvm;  // surface: the light subpath's MIS sums as it reached the parent
 } PhotonParent;
 
+// A light point the subpath left (not a light at infinity) as a parent.
+inline PhotonParent photon_parent_light(const GdrLightOrigin* o) {
+  PhotonParent pa;
+  pa.kind = GPM_PARENT_LIGHT;
+  pa.p = vload3(0, o->p);
+  pa.ng = vload3(0, o->n);
+  pa.light = o->light;
+  return pa;
+}
+
+// Stored light vertex q as a parent.
+inline PhotonParent photon_parent_vertex(const SceneData* s, const GdrBidirVertex* q) {
+  PhotonParent pa;
+  Surface sq = surface_at(s, q->prim, q->u, q->v);
+  pa.kind = GPM_PARENT_SURFACE;
+  pa.light = -1;
+  pa.p = sq.p;
+  pa.ng = sq.ng;
+  pa.b = surface_bsdf(s, &sq);
+  pa.frame = frame_from_normal(sq.ns);
+  pa.wo = vload3(0, q->wo);
+  pa.dvcm = q->dvcm;
+  pa.dvc = q->dvc;
+  pa.dvm = q->dvm;
+  return pa;
+}
+
 // The parent of store entry `entry` (vertex j of light subpath `slot`: entry = j * stride + slot),
 // photon y.
 inline PhotonParent photon_parent(const SceneData* s, __global const GdrBidirVertex* store,
@@ -60,26 +87,12 @@ inline PhotonParent photon_parent(const SceneData* s, __global const GdrBidirVer
       pa.ng = (float3)(0.0f);
       return pa;
     }
-    pa.kind = GPM_PARENT_LIGHT;
-    pa.p = vload3(0, o.p);
-    pa.ng = vload3(0, o.n);
-    pa.light = o.light;
-    return pa;
+    return photon_parent_light(&o);
   }
   if (j == 0) return pa;
   GdrBidirVertex q = store[(j - 1) * stride + slot];
-  if (q.depth != y->depth - 1) return pa;  // a delta vertex lies between
-  Surface sq = surface_at(s, q.prim, q.u, q.v);
-  pa.kind = GPM_PARENT_SURFACE;
-  pa.p = sq.p;
-  pa.ng = sq.ng;
-  pa.b = surface_bsdf(s, &sq);
-  pa.frame = frame_from_normal(sq.ns);
-  pa.wo = vload3(0, q.wo);
-  pa.dvcm = q.dvcm;
-  pa.dvc = q.dvc;
-  pa.dvm = q.dvm;
-  return pa;
+  if (q.depth != y->depth - 1) return pa;  // a delta vertex lies between (gbidir/photon_chain.h)
+  return photon_parent_vertex(s, &q);
 }
 
 // What the parent sends along w (unit, leaving it), up to a factor the same for every w: the

@@ -32,6 +32,7 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
       light_paths_(in.context, capacity_),
       camera_paths_(in.context, lt() ? 0 : capacity_),
       light_origins_(in.context, capacity_),
+      delta_points_(in.context, 1),
       seen_(in.context, capacity_),
       store_(in.context, capacity_ * size_t(store_vertices_)),
       camera_vertices_(in.context, lt() ? 0 : capacity_),
@@ -63,7 +64,7 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
     light_shade_
         .args(p, o, active, cl_uint(capacity_), in_.device_scene.camera(), queues_.rays[cur], queues_.slots[cur],
               queues_.rays[1 - cur], queues_.slots[1 - cur], shadow_rays_, sink.splats.slots(), seen_, light_paths_,
-              store_, counters_.buffer(), primary_, in_.device_scene)
+              store_, delta_points_, delta_depths_, counters_.buffer(), primary_, in_.device_scene)
         .run(active);
     counters_.read();
     if (counters_[BIDIR_COUNTER_LIGHT_VERTICES] > 0) ++stored_bound_;
@@ -176,8 +177,13 @@ void BidirSubpaths::trace_light(const GdrPtParams& p, const GdrBidirOptions& o, 
 }
 
 PhotonGrid BidirSubpaths::grid() const {
-  return PhotonGrid{store_, store_points_, grid_starts_, grid_sorted_, light_origins_,
-                    stored_ > 0 ? grid_buckets_ : 0, cl_uint(capacity_)};
+  return PhotonGrid{store_,         store_points_, grid_starts_, grid_sorted_, light_origins_,
+                    stored_ > 0 ? grid_buckets_ : 0, cl_uint(capacity_), delta_points_, delta_depths_};
+}
+
+void BidirSubpaths::record_delta_points() {
+  delta_depths_ = cl_uint(kBdptMaxSegments);
+  delta_points_ = Buffer<GdrManifoldPoint>(in_.context, capacity_ * delta_depths_);
 }
 
 void BidirSubpaths::trace(const GdrPtParams& p, const GdrBidirOptions& o, bool light, const PrimarySamples& primary,

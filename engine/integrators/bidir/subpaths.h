@@ -23,6 +23,7 @@
 #include "render/wavefront/primitives.h"
 #include "render/wavefront/ray_queues.h"
 #include "shared/bidir_types.h"
+#include "shared/manifold_types.h"
 
 namespace gdr {
 
@@ -49,6 +50,10 @@ struct PhotonGrid {
   const Buffer<GdrLightOrigin>& origins;
   cl_uint buckets;
   cl_uint stride;
+  // Where record_delta_points() was asked: the delta vertices' points (the vertex k bounces from
+  // its light at delta_points[(k - 1) * stride + i], k up to delta_depths; 0: none kept).
+  const Buffer<GdrManifoldPoint>& delta_points;
+  cl_uint delta_depths;
 };
 
 class BidirSubpaths {
@@ -71,6 +76,8 @@ class BidirSubpaths {
   // the caller's own camera subpaths (G-BDPT's groups: GroupLightSubpaths; G-PM's: grid()).
   void trace_light(const GdrPtParams& p, const GdrBidirOptions& o, const BidirSink& sink);
   PhotonGrid grid() const;
+  // From now on the light subpaths keep their delta vertices' points too (PhotonGrid).
+  void record_delta_points();
   const Buffer<GdrBidirPathState>& light_paths() const { return light_paths_; }
   const Buffer<GdrBidirVertex>& store() const { return store_; }
   const Buffer<GdrLightOrigin>& origins() const { return light_origins_; }
@@ -111,6 +118,8 @@ class BidirSubpaths {
   RayQueues queues_;
   Buffer<GdrBidirPathState> light_paths_, camera_paths_;
   Buffer<GdrLightOrigin> light_origins_;
+  Buffer<GdrManifoldPoint> delta_points_;  // record_delta_points(): a point a bounce a subpath
+  cl_uint delta_depths_ = 0;
   Buffer<GdrBidirVertex> seen_, store_, camera_vertices_;
   Buffer<cl_uint> connectable_;
   std::optional<DevicePrimitives> primitives_;      // merging: the grid's sort

@@ -2,12 +2,10 @@
 
 namespace gdr {
 
-const std::vector<std::string> kGpmParams = {"shift", "shift_threshold", "aux", "radius", "radius_alpha"};
+const std::vector<std::string> kGpmParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
+                                             "manifold_tolerance", "manifold_precision", "radius", "radius_alpha"};
 
-GptSettings gpm_settings(const IntegratorParams& params) {
-  return gpt_settings_without_manifold(params, "gpm shifts its camera subpaths by hybrid or replay (they end at "
-                                               "their first rough vertex, before any manifold walk)");
-}
+GptSettings gpm_settings(const IntegratorParams& params) { return gpt_settings(params); }
 
 GradientPhotonMapping::GradientPhotonMapping(const RenderInputs& in, const GptSettings& gpt,
                                              const IntegratorParams& params)
@@ -15,7 +13,9 @@ GradientPhotonMapping::GradientPhotonMapping(const RenderInputs& in, const GptSe
       photons_(pm_settings(params)),
       subpaths_(in, BIDIR_PM, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, 1),
-      shifts_(in, groups_) {}
+      shifts_(in, groups_, gpt_manifold_enabled(in.scene, gpt), gpt.manifold) {
+  if (gpt_manifold_enabled(in.scene, gpt)) subpaths_.record_delta_points();
+}
 
 void GradientPhotonMapping::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
                                         uint32_t count) {
@@ -30,6 +30,7 @@ void GradientPhotonMapping::trace_chunk(const RenderSettings& settings, uint32_t
   groups_.trace(p, PrimarySamples(), aux(), nullptr, merge);
   groups_.report(in_.context.stats());
   subpaths_.report(in_.context.stats());
+  shifts_.report(in_.context.stats());
 }
 
 RenderResult GradientPhotonMapping::render(const RenderSettings& settings) {

@@ -9,11 +9,17 @@
 // the same pair weight. The radius schedule and its parameters are pm's; outputs and
 // reconstruction are G-PT's.
 //
-// Left out: the manifold walk the reference takes for a photon whose parent is a delta vertex
-// (such shifts fail, counted in shift_failures/photon_parent, and the base keeps its full weight).
+// A photon whose parent is a delta vertex is shifted by a manifold walk under --shift manifold
+// (kernels/gbidir/photon_chain.h: the chain moved with the last rough light vertex fixed, as the
+// reference's shiftPhotonManifold; counted in shifts/manifold and shift_failures/manifold, the
+// walks' own outcomes in manifold/*); under the other shifts, and behind a point, spot or
+// infinite light or a chain over MANIFOLD_MAX_CHAIN vertices, such shifts fail (counted in
+// shift_failures/photon_parent or manifold/fail_chain_too_long) and the base keeps its full weight.
+// The camera subpaths end at their first rough vertex, so --shift manifold shifts them as hybrid.
 //
-// Parameters (IntegratorParams): shift (hybrid, the default, | replay), shift_threshold and aux as
-// gpt's; radius and radius_alpha as pm's; recon, recon_solver, alpha: the reconstruction
+// Parameters (IntegratorParams): shift (hybrid, the default, | replay | manifold), shift_threshold,
+// aux and the manifold walk's (manifold_iterations, _tolerance, _precision) as gpt's; radius and
+// radius_alpha as pm's; recon, recon_solver, alpha: the reconstruction
 // (render/gradient_images.h). Paths are pm's: at most kBdptMaxSegments segments.
 #pragma once
 #include "integrators/bidir/bidirectional.h"

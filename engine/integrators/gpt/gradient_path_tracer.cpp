@@ -15,12 +15,6 @@ GptSettings gpt_settings(const IntegratorParams& params) {
   return s;
 }
 
-GptSettings gpt_settings_without_manifold(const IntegratorParams& params, const std::string& why) {
-  GptSettings s = gpt_settings(params);
-  if (s.shift == GPT_SHIFT_MANIFOLD) throw Error("integrator parameter shift: " + why);
-  return s;
-}
-
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params)
     : GradientPathTracer(in, gpt, params, GroupKind::kPaths) {}
 

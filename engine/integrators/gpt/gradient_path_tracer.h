@@ -25,9 +25,6 @@ namespace gdr {
 
 extern const std::vector<std::string> kGptParams;
 GptSettings gpt_settings(const IntegratorParams& params);
-// gpt_settings for an integrator whose camera subpaths take no manifold walk: --shift manifold is
-// an error, `why` its message.
-GptSettings gpt_settings_without_manifold(const IntegratorParams& params, const std::string& why);
 
 class GradientPathTracer : public Integrator {
  public:

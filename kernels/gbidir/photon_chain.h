@@ -1,0 +1,162 @@
+// G-PM's manifold photon shift (Hua et al. 2017, the reference's shiftPhotonManifold): a photon y
+// whose parent is a delta vertex arrived through a chain s_1 .. s_m of delta vertices from the last
+// rough vertex b of its light subpath (a stored vertex, or the point it left an area light from).
+// The offset photon y' is the first surface the ray from s_m toward the photon's target
+// (photon_shift_target) meets; a manifold walk (manifold/walk.h, run by the host's manifold stage)
+// then moves the chain so that it joins y' to b, b fixed: the walk's x_0 is y' (from the base's
+// y), its x_e is b, its vertices the chain from the photon's side. The offset's throughput and
+// density change by the parent's F and pdf toward the new chain (photon_parent_eval), each delta
+// vertex's lobe value and probability (with importance transport's shading-normal factor), and
+// the generalized geometry term from b to the photon, which the walk's g (|d w_0 / dA(x_e)|, seen
+// from the photon) gives turned around by the conservation of etendue:
+//   |d w_b / dA(y)| = |d w_y / dA(b)| cos_y / cos_b,
+// the cosines those of the chain's end segments at y and b (the media's indices at the two ends
+// are the same for base and offset, and cancel). The photon's move onto its own surface counts 1,
+// as for the reconnection (gbidir/photon_shift.h). Built where gpm walks (GDR_GPM with
+// GDR_MANIFOLD).
+#pragma once
+#include "bsdf/transport.h"
+#include "gbidir/photon_shift.h"
+#include "manifold/walk.h"
+#include "shift/delta_lobe.h"
+
+typedef struct PhotonChain {
+  int count;                                // m
+  GdrManifoldPoint end;                     // b
+  GdrManifoldPoint v[MANIFOLD_MAX_CHAIN];   // s_1 .. s_m, from b's side
+  PhotonParent parent;                      // b, as photon_parent_eval reads it
+} PhotonChain;
+
+// The chain before store entry `entry` (vertex j of subpath `slot`), photon y, whose parent is a
+// delta vertex: 1, or 0 with *reason the GPT_COUNTER_FAIL_* it fails by (a chain longer than
+// MANIFOLD_MAX_CHAIN; a light other than an area light before it, or no points kept).
+inline int photon_chain(const SceneData* s, __global const GdrBidirVertex* store,
+                        __global const GdrLightOrigin* origins, __global const GdrManifoldPoint* delta_points,
+                        uint delta_depths, uint stride, uint entry, const GdrBidirVertex* y, PhotonChain* ch,
+                        int* reason) {
+  uint j = entry / stride, slot = entry % stride;
+  *reason = GPT_COUNTER_FAIL_PHOTON_PARENT;
+  int first;  // the chain's first vertex, in bounces from the light
+  if (j > 0) {
+    GdrBidirVertex q = store[(j - 1) * stride + slot];
+    first = q.depth + 1;
+    ch->parent = photon_parent_vertex(s, &q);
+    GdrManifoldPoint b = {q.prim, q.u, q.v};
+    ch->end = b;
+  } else {
+    GdrLightOrigin o = origins[slot];
+    if (o.light < 0 || s->lights[o.light].type != LIGHT_AREA) return 0;
+    first = 1;
+    ch->parent = photon_parent_light(&o);
+    // The light's point on its triangle, with barycentrics as precise as the walk needs.
+    ch->end = manifold_refine_hit(s, (uint)s->lights[o.light].triangle, ch->parent.p + ch->parent.ng,
+                                  -ch->parent.ng);
+  }
+  int m = y->depth - first;
+  if (m < 1 || (uint)(y->depth - 1) > delta_depths) return 0;
+  if (m > MANIFOLD_MAX_CHAIN) {
+    *reason = GPT_COUNTER_FAIL_CHAIN_LONG;
+    return 0;
+  }
+  ch->count = m;
+  for (int i = 0; i < m; ++i) ch->v[i] = delta_points[(uint)(first + i - 1) * stride + slot];
+  return 1;
+}
+
+// The ray from the chain's last vertex toward the target: its first hit is the offset photon.
+inline void photon_chain_ray(const SceneData* s, __global GdrRayHit* r, const PhotonChain* ch, float3 target,
+                             uint id) {
+  GdrManifoldPoint last = ch->v[ch->count - 1];
+  Surface sl = surface_at(s, last.prim, last.b1, last.b2);
+  float3 d = normalize(target - sl.p);
+  write_ray_hit(r, leaving_origin(sl.p, sl.ng, d), d, 0.0f, INFINITY, id);
+}
+
+// Whether the path bends through the surface at p (geometric normal ng) from a to b.
+inline int chain_transmits(float3 p, float3 ng, float3 a, float3 b) { return dot(ng, a - p) * dot(ng, b - p) < 0.0f; }
+
+// The walk of base photon y (at `origin`) to offset photon `start` along chain ch: the chain from
+// the photon's side, each vertex's delta lobe (reflection or transmission) as the base took it.
+inline GdrManifoldWalk photon_chain_walk(const SceneData* s, const PhotonChain* ch, GdrManifoldPoint origin,
+                                         GdrManifoldPoint start, uint owner) {
+  GdrManifoldWalk w;
+  const int m = ch->count;
+  w.start = start;
+  w.end = ch->end;
+  w.origin = origin;
+  w.count = m;
+  w.owner = owner;
+  w.pad0 = 0;
+  float3 p[MANIFOLD_MAX_CHAIN + 2];  // y, s_m .. s_1, b
+  p[0] = manifold_point_on(s, origin);
+  for (int i = 0; i < m; ++i) p[i + 1] = manifold_point_on(s, ch->v[m - 1 - i]);
+  p[m + 1] = manifold_point_on(s, ch->end);
+  for (int i = 0; i < MANIFOLD_MAX_CHAIN; ++i) {
+    w.v[i].at = ch->v[i < m ? m - 1 - i : 0];
+    w.v[i].flags = MANIFOLD_VERTEX_DELTA;
+    w.v[i].h[0] = w.v[i].h[1] = w.v[i].h[2] = w.v[i].pad0 = 0.0f;
+    if (i >= m) continue;
+    Surface su = surface_at(s, w.v[i].at.prim, w.v[i].at.b1, w.v[i].at.b2);
+    if (chain_transmits(p[i + 1], su.ng, p[i], p[i + 2])) w.v[i].flags |= MANIFOLD_VERTEX_TRANSMIT;
+  }
+  return w;
+}
+
+// What a delta vertex at `at` passes on from the light side (toward a) to b under importance
+// transport, and the probability of its lobe (*pdf); 0 where it has no such lobe.
+inline float3 chain_delta_value(const SceneData* s, GdrManifoldPoint at, int transmit, float3 a, float3 b,
+                                float* pdf) {
+  Surface su = surface_at(s, at.prim, at.b1, at.b2);
+  Bsdf bs = surface_bsdf(s, &su);
+  Frame fr = frame_from_normal(su.ns);
+  float3 wo = normalize(a - su.p), wi = normalize(b - su.p);
+  float3 wo_l = frame_to_local(&fr, wo), wi_l = frame_to_local(&fr, wi);
+  BsdfSample so;
+  *pdf = 0.0f;
+  if (!bsdf_sample_delta_lobe(&bs, wo_l, transmit, &so)) return (float3)(0.0f);
+  *pdf = so.pdf;
+  return so.weight * so.pdf * shading_normal_correction(wo, wi, su.ng, wo_l.z, wi_l.z);
+}
+
+// The offset photon of solved walk W (result R) for base photon y (throughput phi) along chain ch:
+// its throughput (*phi2), the density ratio p(y') / p(y) of the chain's segments (*ratio) and its
+// direction toward the chain (*wi2); 0 where it carries nothing (a delta surface at y', a side
+// its shading frame disagrees with, a lobe missing).
+inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const GdrManifoldWalk* W,
+                             const GdrManifoldResult* R, const Surface* sy, const Surface* sy2, float3 phi,
+                             float3* phi2, float* ratio, float3* wi2) {
+  const int m = ch->count;
+  float3 bp[MANIFOLD_MAX_CHAIN + 2], op[MANIFOLD_MAX_CHAIN + 2];  // b, s_1 .. s_m, y: base and offset
+  bp[0] = op[0] = manifold_point_on(s, ch->end);
+  for (int i = 0; i < m; ++i) {
+    bp[i + 1] = manifold_point_on(s, ch->v[i]);
+    op[i + 1] = manifold_point_on(s, R->v[m - 1 - i]);
+  }
+  bp[m + 1] = sy->p;
+  op[m + 1] = sy2->p;
+  *wi2 = normalize(op[m] - op[m + 1]);
+  Bsdf by2 = surface_bsdf(s, sy2);
+  Frame f2 = frame_from_normal(sy2->ns);
+  if (bsdf_is_delta(&by2) || !sides_agree(*wi2, sy2->ng, frame_to_local(&f2, *wi2).z)) return 0;
+  float pdf, pdf2;
+  float3 e = photon_parent_eval(s, &ch->parent, normalize(bp[1] - bp[0]), &pdf);
+  float3 e2 = photon_parent_eval(s, &ch->parent, normalize(op[1] - op[0]), &pdf2);
+  float3 value = (float3)(safe_div(e2.x, e.x), safe_div(e2.y, e.y), safe_div(e2.z, e.z));
+  float density = safe_div(pdf2, pdf);
+  for (int i = 1; i <= m && density > 0.0f; ++i) {
+    Surface su = surface_at(s, ch->v[i - 1].prim, ch->v[i - 1].b1, ch->v[i - 1].b2);
+    int transmit = chain_transmits(su.p, su.ng, bp[i - 1], bp[i + 1]);
+    float lp, lp2;
+    float3 v = chain_delta_value(s, ch->v[i - 1], transmit, bp[i - 1], bp[i + 1], &lp);
+    float3 v2 = chain_delta_value(s, R->v[m - i], transmit, op[i - 1], op[i + 1], &lp2);
+    value *= (float3)(safe_div(v2.x, v.x), safe_div(v2.y, v.y), safe_div(v2.z, v.z));
+    density *= safe_div(lp2, lp);
+  }
+  float cos_b = fabs(dot(ch->parent.ng, normalize(bp[1] - bp[0])));
+  float cos_b2 = fabs(dot(ch->parent.ng, normalize(op[1] - op[0])));
+  float cos_y = fabs(dot(sy->ng, normalize(bp[m] - bp[m + 1]))), cos_y2 = fabs(dot(sy2->ng, *wi2));
+  float g = safe_div(R->g_walk * cos_y2 * cos_b, R->g_origin * cos_y * cos_b2);
+  *phi2 = phi * value * g;
+  *ratio = density * g;
+  return max3(*phi2) > 0.0f && *ratio > 0.0f && isfinite(*ratio) && all(isfinite(*phi2));
+}
