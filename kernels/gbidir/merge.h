@@ -31,11 +31,16 @@
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 #include "shared/manifold_types.h"
-#include "shift/delta_lobe.h"  // before the block below: the sources are joined once per file
+#include "shift/delta_lobe.h"
 #include "wavefront/counter_shard.h"
-#if defined(GDR_GPM) && defined(GDR_MANIFOLD)
-#define GPM_PHOTON_WALKS 1
+// The kernel sources join each header once, whatever the conditions around its #include: a header
+// first included under a condition that fails is gone for the rest of the program. So the manifold
+// headers come in wherever the program has GDR_MANIFOLD, as gpt/manifold_step.h needs them too.
+#if defined(GDR_MANIFOLD)
 #include "gbidir/photon_chain.h"
+#if defined(GDR_GPM)
+#define GPM_PHOTON_WALKS 1
+#endif
 #endif
 
 #define GPM_NO_WALK 0xffffffffu
