@@ -18,7 +18,11 @@
 // last vertex, and a fourth launch between Embree and gpm_merge,
 //   gpm_photon_walks  for each of them that found a photon within the offset's radius, the walk
 //                     (walk_of[ray] its index, GPM_NO_WALK for none), which the host's manifold
-//                     stage solves before gpm_merge reads them.
+//                     stage solves before gpm_merge reads them;
+//   gpm_photon_reverse_rays  for each solved walk, the segment from its chain's last vertex to
+//                     the base photon, which Embree checks: the reverse shift's ray from there
+//                     must find the base photon (the reference's visibility check), else the
+//                     shift is not invertible.
 // All of them walk the photons in the same order (bidir/photon_query.h). A slice of the groups at a
 // time: [first, first + count) of `connectable`, its rays from starts[first] on (rays past the
 // buffer's capacity are not traced: their shifts fail).
@@ -28,6 +32,7 @@
 #include "gbidir/weights.h"
 #include "gradient/accumulators.h"
 #include "path/film.h"
+#include "path/shadow.h"
 #include "shared/gbidir_types.h"
 #include "shared/gpt_types.h"
 #include "shared/manifold_types.h"
@@ -206,6 +211,21 @@ __kernel void gpm_photon_walks(GdrGptParams params, GdrBidirOptions opts, uint f
     }
   }
 }
+
+__kernel void gpm_photon_reverse_rays(GdrGptParams params, uint count, __global const GdrManifoldWalk* walks,
+                                      __global const GdrManifoldResult* results, __global GdrRay* rays,
+                                      SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  if (results[i].status != 0) {
+    write_ray(&rays[i], (float3)(0.0f), (float3)(0.0f, 0.0f, 1.0f), 1.0f, 0.0f, i);  // skipped: no walk
+    return;
+  }
+  SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+  GdrManifoldPoint last = results[i].v[0];
+  Surface sl = surface_at(&s, last.prim, last.b1, last.b2);
+  write_segment_ray(&rays[i], sl.p, sl.ng, manifold_point_on(&s, walks[i].origin), i);
+}
 #endif
 
 __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, uint count,
@@ -216,7 +236,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
                         __global const GdrManifoldPoint* delta_points, uint delta_depths, uint stride,
                         __global const uint* ray_starts, __global const GdrRayHit* rays, uint ray_capacity,
                         __global const uint* walk_of, __global const GdrManifoldWalk* walks,
-                        __global const GdrManifoldResult* walk_results, __global float4* acc,
+                        __global const GdrManifoldResult* walk_results, __global const GdrRay* reverse_rays,
+                        __global float4* acc,
                         __global uint* counters, SCENE_DATA_ARGS) {
   uint q = first + get_global_id(0);
   if (q >= first + count) return;
@@ -267,7 +288,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   for (int k = 0; k < GPT_OFFSETS; ++k) sum_base[k] = sum_off[k] = (float3)(0.0f);
   // Counted per group, one atomic each at the end (not one per photon on one counter).
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e, merged = 0, orphans = 0, lost = 0, walked = 0, unwalked = 0,
-       long_chains = 0;
+       long_chains = 0, irreversible = 0;
   float r2 = opts.radius * opts.radius;
   PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
@@ -356,7 +377,9 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
           Surface sy2 = surface_at(&s, W.start.prim, W.start.b1, W.start.b2);
           float3 phi2, wi2;
           float photon_ratio;
-          if (res.status == 0 && res.g_walk > 0.0f && res.g_origin > 0.0f &&
+          const int reversible = shadow_unoccluded(reverse_rays[wi].tfar);
+          irreversible += res.status == 0 && !reversible;
+          if (res.status == 0 && reversible && res.g_walk > 0.0f && res.g_origin > 0.0f &&
               photon_chain_eval(&s, &ch, &W, &res, &sy, &sy2, phi, &phi2, &photon_ratio, &wi2)) {
             co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
                  photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
@@ -380,6 +403,7 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   if (walked) atomic_add(&stats[GPT_COUNTER_SHIFT_MANIFOLD], walked);
   if (unwalked) atomic_add(&stats[GPT_COUNTER_FAIL_MANIFOLD], unwalked);
   if (long_chains) atomic_add(&stats[GPT_COUNTER_FAIL_CHAIN_LONG], long_chains);
+  if (irreversible) atomic_add(&stats[GPT_COUNTER_FAIL_NOT_INVERTIBLE], irreversible);
   if (merged == 0) return;
   atomic_add(&stats[GPT_COUNTER_MERGES], merged);
   for (int k = 0; k < GPT_OFFSETS; ++k) {

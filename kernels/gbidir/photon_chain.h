@@ -12,7 +12,9 @@
 //   |d w_b / dA(y)| = |d w_y / dA(b)| cos_y / cos_b,
 // the cosines those of the chain's end segments at y and b (the media's indices at the two ends
 // are the same for base and offset, and cancel). The photon's move onto its own surface counts 1,
-// as for the reconnection (gbidir/photon_shift.h). Built where gpm walks (GDR_GPM with
+// as for the reconnection (gbidir/photon_shift.h). The walk itself checks that it leads back to
+// the base chain; the merge stage also checks that the new chain's last vertex sees the base
+// photon (the reverse shift's ray: gbidir/merge.h). Built where gpm walks (GDR_GPM with
 // GDR_MANIFOLD).
 #pragma once
 #include "bsdf/transport.h"

@@ -27,9 +27,11 @@ PhotonShifts::PhotonShifts(const RenderInputs& in, const GradientGroups& groups,
       shift_rays_(in.context, max_rays_, ray_queue_flags(in.context)),
       walk_of_(in.context, walks ? max_rays_ : 1),
       walks_(in.context, walks ? max_rays_ : 1),
-      walk_results_(in.context, walks ? max_rays_ : 1) {
+      walk_results_(in.context, walks ? max_rays_ : 1),
+      reverse_rays_(in.context, walks ? max_rays_ : 1, ray_queue_flags(in.context)) {
   if (!walks) return;
   walk_kernel_.emplace(groups.kernels().make(groups.program(), "gpm_photon_walks"));
+  reverse_kernel_.emplace(groups.kernels().make(groups.program(), "gpm_photon_reverse_rays"));
   manifold_.emplace(in, groups.kernels(), groups.program(), max_rays_, manifold);
 }
 
@@ -56,14 +58,19 @@ void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, 
           .run(count);
       groups.counters().read();
       const cl_uint walks = groups.counters()[GPT_COUNTER_MANIFOLD_WALKS];
-      if (walks > 0) manifold_->solve(walks_, walks, walk_results_, p.path);
+      if (walks > 0) {
+        manifold_->solve(walks_, walks, walk_results_, p.path);
+        reverse_kernel_->args(p, walks, walks_, walk_results_, reverse_rays_, in_.device_scene).run(walks);
+        occlude(in_.embree, reverse_rays_, walks, "photon_reverse");
+      }
     }
   }
   groups.counters().reset();
   merge_
       .args(p, o, first, count, groups.connectable(), groups.records(), groups.bases(), g.store, g.points, g.starts,
             g.sorted, g.buckets, g.origins, g.delta_points, g.delta_depths, g.stride, starts_, shift_rays_, capacity,
-            walk_of_, walks_, walk_results_, groups.acc(), groups.counters().buffer(), in_.device_scene)
+            walk_of_, walks_, walk_results_, reverse_rays_, groups.acc(), groups.counters().buffer(),
+            in_.device_scene)
       .run(count);
   groups.counters().read();
 }

@@ -44,11 +44,12 @@ class PhotonShifts {
   Buffer<cl_uint> starts_;       // the recorded groups' first photon with rays, a scan of their counts
   Buffer<GdrRayHit> shift_rays_;  // four a photon
   // The manifold photon shift: at most a walk a ray, each ray's walk (or GPM_NO_WALK).
-  std::optional<Kernel> walk_kernel_;
+  std::optional<Kernel> walk_kernel_, reverse_kernel_;
   std::optional<ManifoldWalks> manifold_;
   Buffer<cl_uint> walk_of_;
   Buffer<GdrManifoldWalk> walks_;
   Buffer<GdrManifoldResult> walk_results_;
+  Buffer<GdrRay> reverse_rays_;  // each solved walk's chain back to the base photon
 };
 
 }  // namespace gdr
