@@ -177,7 +177,7 @@ void BidirSubpaths::trace_light(const GdrPtParams& p, const GdrBidirOptions& o, 
 }
 
 PhotonGrid BidirSubpaths::grid() const {
-  return PhotonGrid{store_,         store_points_, grid_starts_, grid_sorted_, light_origins_,
+  return PhotonGrid{store_, store_points_, grid_starts_, grid_sorted_, light_origins_,
                     stored_ > 0 ? grid_buckets_ : 0, cl_uint(capacity_), delta_points_, delta_depths_};
 }
 
