@@ -13,9 +13,10 @@
 // at the base's vertex merge the same photon, and base and offset share G-VCM's weight over every
 // strategy of both paths (gbidir/weights.h), the offset photon's light-side sums re-aimed with it
 // (photon_shift_sums).
-// Where gpm walks (GDR_GPM with GDR_MANIFOLD: --shift manifold), a photon whose parent is a delta
-// vertex is shifted by the manifold photon shift (gbidir/photon_chain.h): its ray leaves the chain's
-// last vertex, and a fourth launch between Embree and gpm_merge,
+// Where gpm or gvcm walks (GDR_MANIFOLD: --shift manifold), a photon whose parent is a delta
+// vertex is shifted by the manifold photon shift (gbidir/photon_chain.h; G-VCM's light-side sums
+// recomputed along the new chain, photon_chain_sums): its ray leaves the chain's last vertex, and
+// a fourth launch between Embree and gpm_merge,
 //   gpm_photon_walks  for each of them that found a photon within the offset's radius, the walk
 //                     (walk_of[ray] its index, GPM_NO_WALK for none), which the host's manifold
 //                     stage solves before gpm_merge reads them;
@@ -43,7 +44,7 @@
 // headers come in wherever the program has GDR_MANIFOLD, as gpt/manifold_step.h needs them too.
 #if defined(GDR_MANIFOLD)
 #include "gbidir/photon_chain.h"
-#if defined(GDR_GPM)
+#if defined(GDR_GPM) || defined(GDR_GVCM)
 #define GPM_PHOTON_WALKS 1
 #endif
 #endif
@@ -385,6 +386,14 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
                  photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
             formed = max3(co) > 0.0f;
             ratio = rec.ratio[k] * photon_ratio;
+#if defined(GDR_GVCM)
+            if (formed) {
+              float y2_dvcm, y2_dvc, y2_dvm;
+              photon_chain_sums(&s, &ch, &res, &y, &sy, &sy2, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
+              oy = MERGE_OTHERS(MERGE_PDFS(&bo[k], &fo[k], wo_o[k], wi2), y2_dvcm, y2_dvm, &rec.offset[k],
+                                rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
+            }
+#endif
           }
           walked += formed;
           unwalked += !formed;

@@ -14,12 +14,12 @@
 // are the same for base and offset, and cancel). The photon's move onto its own surface counts 1,
 // as for the reconnection (gbidir/photon_shift.h). The walk itself checks that it leads back to
 // the base chain; the merge stage also checks that the new chain's last vertex sees the base
-// photon (the reverse shift's ray: gbidir/merge.h). Built where gpm walks (GDR_GPM with
-// GDR_MANIFOLD).
+// photon (the reverse shift's ray: gbidir/merge.h). Built where gpm or gvcm walks (GDR_MANIFOLD).
 #pragma once
 #include "bsdf/transport.h"
 #include "gbidir/photon_shift.h"
 #include "manifold/walk.h"
+#include "shared/gpt_types.h"
 #include "shift/delta_lobe.h"
 
 typedef struct PhotonChain {
@@ -120,6 +120,20 @@ inline float3 chain_delta_value(const SceneData* s, GdrManifoldPoint at, int tra
   return so.weight * so.pdf * shading_normal_correction(wo, wi, su.ng, wo_l.z, wi_l.z);
 }
 
+// The chain's points for base and offset, b first: b, s_1 .. s_m and the photon (sy, sy2), the
+// offset's from solved walk R.
+inline void photon_chain_points(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
+                                const Surface* sy, const Surface* sy2, float3* bp, float3* op) {
+  const int m = ch->count;
+  bp[0] = op[0] = manifold_point_on(s, ch->end);
+  for (int i = 0; i < m; ++i) {
+    bp[i + 1] = manifold_point_on(s, ch->v[i]);
+    op[i + 1] = manifold_point_on(s, R->v[m - 1 - i]);
+  }
+  bp[m + 1] = sy->p;
+  op[m + 1] = sy2->p;
+}
+
 // The offset photon of solved walk W (result R) for base photon y (throughput phi) along chain ch:
 // its throughput (*phi2), the density ratio p(y') / p(y) of the chain's segments (*ratio) and its
 // direction toward the chain (*wi2); 0 where it carries nothing (a delta surface at y', a side
@@ -129,13 +143,7 @@ inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const Gd
                              float3* phi2, float* ratio, float3* wi2) {
   const int m = ch->count;
   float3 bp[MANIFOLD_MAX_CHAIN + 2], op[MANIFOLD_MAX_CHAIN + 2];  // b, s_1 .. s_m, y: base and offset
-  bp[0] = op[0] = manifold_point_on(s, ch->end);
-  for (int i = 0; i < m; ++i) {
-    bp[i + 1] = manifold_point_on(s, ch->v[i]);
-    op[i + 1] = manifold_point_on(s, R->v[m - 1 - i]);
-  }
-  bp[m + 1] = sy->p;
-  op[m + 1] = sy2->p;
+  photon_chain_points(s, ch, R, sy, sy2, bp, op);
   *wi2 = normalize(op[m] - op[m + 1]);
   Bsdf by2 = surface_bsdf(s, sy2);
   Frame f2 = frame_from_normal(sy2->ns);
@@ -161,4 +169,55 @@ inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const Gd
   *phi2 = phi * value * g;
   *ratio = density * g;
   return max3(*phi2) > 0.0f && *ratio > 0.0f && isfinite(*ratio) && all(isfinite(*phi2));
+}
+
+// What the cosines of a chain's delta vertices do to the light subpath's sums dvc and dvm on the
+// way from b to the photon (pts: b, s_1 .. s_m, y; ny the photon's geometric normal): each delta
+// vertex divides them by its arrival's cosine and multiplies them by its departure's
+// (mis_sums_arrive, mis_sums_scatter), the photon divides them by its own. Not in the heuristic's
+// power.
+inline float photon_chain_cosines(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
+                                  const float3* pts, float3 ny, int offset) {
+  const int m = ch->count;
+  float f = 1.0f;
+  for (int i = 1; i <= m; ++i) {
+    GdrManifoldPoint at = offset ? R->v[m - i] : ch->v[i - 1];
+    float3 ng = surface_at(s, at.prim, at.b1, at.b2).ng;
+    f *= safe_div(fabs(dot(ng, normalize(pts[i + 1] - pts[i]))), fabs(dot(ng, normalize(pts[i - 1] - pts[i]))));
+  }
+  return safe_div(f, fabs(dot(ny, normalize(pts[m] - pts[m + 1]))));
+}
+
+// The light subpath's MIS sums (bidir/subpath_mis.h) at the offset photon of solved walk R, for
+// G-VCM's weights: those base photon y arrived with, its chain moved. Through a delta vertex dvcm
+// becomes 0 and dvc and dvm change by cosines alone (photon_chain_cosines). From a rough parent b
+// they are b's sums scattered toward the new chain; from a light point, y's sums with the
+// emission's direction pdf and the light's cosine changed (the position pdf is the same point's).
+inline void photon_chain_sums(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
+                              const GdrBidirVertex* y, const Surface* sy, const Surface* sy2,
+                              const GdrBidirOptions* o, float* dvcm, float* dvc, float* dvm) {
+  float3 bp[MANIFOLD_MAX_CHAIN + 2], op[MANIFOLD_MAX_CHAIN + 2];
+  photon_chain_points(s, ch, R, sy, sy2, bp, op);
+  const PhotonParent* pa = &ch->parent;
+  float3 w = normalize(bp[1] - bp[0]), w2 = normalize(op[1] - op[0]);
+  float chain2 = photon_chain_cosines(s, ch, R, op, sy2->ng, 1);
+  *dvcm = *dvc = *dvm = 0.0f;
+  if (pa->kind == GPM_PARENT_SURFACE) {
+    float3 wo_l = frame_to_local(&pa->frame, pa->wo), w2_l = frame_to_local(&pa->frame, w2);
+    float pdf2 = bsdf_pdf(&pa->b, wo_l, w2_l);
+    if (!(pdf2 > 0.0f)) return;
+    float c = pa->dvcm, v = pa->dvc, m = pa->dvm;
+    mis_sums_scatter(0, pdf2, bsdf_pdf(&pa->b, w2_l, wo_l), fabs(dot(pa->ng, w2)), o, &c, &v, &m);
+    *dvc = v * mis_power_of(chain2, o->mis);
+    *dvm = m * mis_power_of(chain2, o->mis);
+    return;
+  }
+  float pdf, pdf2;
+  photon_parent_eval(s, pa, w, &pdf);
+  photon_parent_eval(s, pa, w2, &pdf2);
+  float chain = photon_chain_cosines(s, ch, R, bp, sy->ng, 0);
+  float scale = safe_div(pdf * fabs(dot(pa->ng, w2)) * chain2, pdf2 * fabs(dot(pa->ng, w)) * chain);
+  if (!(scale > 0.0f) || !isfinite(scale)) return;
+  *dvc = y->dvc * mis_power_of(scale, o->mis);
+  *dvm = y->dvm * mis_power_of(scale, o->mis);
 }

@@ -5,7 +5,8 @@
 // angle a small patch subtends. Random configurations from std::mt19937 with fixed seeds;
 // tolerances are numerical (float arithmetic), not statistical. G-VCM's light-side MIS sums of a
 // shifted photon, recomputed from its parent, are the photon's own where the shift leaves it in
-// place (light subpaths traced by the bidirectional kernels, seed 3).
+// place (light subpaths traced by the bidirectional kernels, seed 3), also behind delta vertices
+// (the manifold photon shift's chain left where it is).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_bidirectional.h"
+#include "render/manifold_walks.h"
 #include "scene/load_scene.h"
 #include "stability/stability_checks.h"
 #include "support/agreement.h"
@@ -127,7 +129,8 @@ TEST(PhotonShift, GeometryTermIsTheSolidAngleOfArea) {
 // `file` then runs over every store entry with (params, options, entries, stride, camera, light
 // paths, store, origins, out, kind, scene), out holding `per_entry` float4s an entry.
 struct LightBatch {
-  LightBatch(const Scene& scene, int technique)
+  // `delta_points`: the subpaths keep their delta vertices' points (the manifold photon shift's chains).
+  LightBatch(const Scene& scene, int technique, bool delta_points = false)
       : on_device(scene),
         in(on_device.inputs()),
         count(cl_uint(scene.camera.width) * scene.camera.height),
@@ -141,6 +144,7 @@ struct LightBatch {
                                : gbdpt_light_options();
     Buffer<Vec4> values(in.context, count);
     SplatFilm splats(in.context, subpaths.kernels(), BidirSubpaths::kProgram, count);
+    if (delta_points) subpaths.record_delta_points();
     subpaths.trace_light(p, o, BidirSink{values, splats});
     entries = cl_uint(subpaths.capacity()) * cl_uint(std::max(subpaths.stored_bound(), 1));
   }
@@ -200,6 +204,42 @@ void expect_sums_unshifted(const Scene& scene, const std::string& what, std::vec
   // Measured (Cornell box, rough parents): median 2.9e-5 (dvcm), p99 1.3e-3, max 0.32 (a grazing
   // arrival); light parents 0.
   expect_small_by_kind(rel, kinds, what, 1e-4, 5e-3);
+}
+
+// G-VCM's sums for a photon behind delta vertices whose chain stays where it is
+// (photon_chain_sums, kernels/tests/photon_chain_test.cl), against those the light subpath carried
+// to the photon: both chain ends (a rough vertex and the light) occur, and dvcm is 0 on both sides.
+TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
+  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 32);
+  LightBatch batch(scene, BIDIR_VCM, true);
+  Defines defines = manifold_defines(batch.in.context.device(), ManifoldSettings{});
+  defines["GDR_GVCM"] = "1";
+  KernelFactory kernels(batch.in.context, scene, defines);
+  const PhotonGrid grid = batch.subpaths.grid();
+  Buffer<cl_float4> b_out(batch.in.context, size_t(2) * batch.entries);
+  Buffer<cl_int> b_kind(batch.in.context, batch.entries);
+  kernels.make("tests/photon_chain_test.cl", "photon_chain_sums_unmoved")
+      .args(batch.p, batch.o, batch.entries, cl_uint(batch.subpaths.capacity()), batch.subpaths.light_paths(),
+            batch.subpaths.store(), batch.subpaths.origins(), grid.delta_points, grid.delta_depths, b_out, b_kind,
+            batch.in.device_scene)
+      .run(batch.entries);
+  const std::vector<cl_float4> out = b_out.read();
+  const std::vector<cl_int> kind = b_kind.read();
+  std::vector<std::vector<double>> rel(4);
+  size_t longer = 0;  // chains of more than one delta vertex
+  for (cl_uint e = 0; e < batch.entries; ++e) {
+    if (kind[e] <= 0) continue;
+    const cl_float4 &v = out[2 * e], &c = out[2 * e + 1];
+    ASSERT_EQ(v.s[0], 0.0f) << "entry " << e << ": the photon's dvcm behind a delta vertex";
+    ASSERT_EQ(v.s[1], 0.0f) << "entry " << e;
+    rel[kind[e]].push_back(std::fabs(v.s[3] - v.s[2]) / std::fabs(v.s[2]));
+    rel[kind[e]].push_back(std::fabs(c.s[1] - c.s[0]) / std::fabs(c.s[0]));
+    longer += c.s[2] > 1.0f;
+  }
+  EXPECT_GT(longer, 20u);
+  // Measured (32 px): rough ends median 3.2e-5, p99 3.8e-4, max 6.1e-4 (the BSDF's pdfs again);
+  // light ends 0. Without the chain's cosines the rough ends' p99 is 0.82.
+  expect_small_by_kind(rel, {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT}, "caustics box chains", 1e-4, 5e-3);
 }
 
 // G-BDPT's light-tracing shift (kernels/gbidir/light_tracing.h, lt_offset) between two points the

@@ -26,13 +26,16 @@
 // tracing, under vcm's weight over every strategy, is shifted as gbdpt's.
 //
 // The manifold shift walks the camera subpaths' offsets across specular chains as gpt's does, their
-// bidirectional sums carried through the walk's vertices (kernels/gpt/manifold_step.h). Left out:
-// photons and light-traced vertices whose parent is a delta vertex are not shifted (as gpm's:
-// counted in shift_failures/photon_parent; light tracing's go to the direct layer).
+// bidirectional sums carried through the walk's vertices (kernels/gpt/manifold_step.h), and gvcm's
+// photons whose parent is a delta vertex as gpm's do (kernels/gbidir/photon_chain.h), their
+// light-side sums recomputed along the new chain. Left out: light-traced vertices whose parent is
+// a delta vertex are not shifted (they go to the direct layer), nor, under the other shifts, such
+// photons (counted in shift_failures/photon_parent).
 //
 // Parameters (IntegratorParams): shift (hybrid, the default, | replay | manifold), shift_threshold,
 // aux and the manifold walk's as gpt's; gvcm: radius and radius_alpha as vcm's; recon,
-// recon_solver, alpha: the reconstruction (render/gradient_images.h). Paths are bdpt's: at most kBdptMaxSegments segments.
+// recon_solver, alpha: the reconstruction (render/gradient_images.h). Paths are bdpt's: at most
+// kBdptMaxSegments segments.
 #pragma once
 #include <optional>
 
