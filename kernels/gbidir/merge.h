@@ -329,6 +329,12 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
       float3 co = (float3)(0.0f);
       float ratio = 0.0f;
       float2 oy = (float2)(0.0f);
+      // A shift tried (1: reconnection from the parent, 2: a manifold walk) and, where it moved
+      // the photon to the offset's point, its throughput, density ratio, direction toward its
+      // parent's side and (G-VCM) light-side sums.
+      int tried = 0, moved = 0;
+      float3 phi2 = (float3)(0.0f), wi2 = (float3)(0.0f);
+      float photon_ratio = 0.0f, y2_dvcm = 0.0f, y2_dvc = 0.0f, y2_dvm = 0.0f;
       if (shared[k]) {
         // At the base's point: the same photon (and, from the base's direction, the base's BSDF
         // values and pdfs).
@@ -341,67 +347,63 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
           oy = MERGE_OTHERS(pdfs_k, y.dvcm, y.dvm, &rec.offset[k], rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
         }
       } else if (own[k] && pa.kind != GPM_PARENT_NONE) {
+        tried = 1;
         GdrRayHit h;
         h.hit.geomID = GDR_INVALID_ID;
         if (r0 + (uint)k < ray_capacity) h = rays[r0 + (uint)k];
         if (h.hit.geomID != GDR_INVALID_ID) {
           Surface sy2 = surface_at(&s, h.hit.primID, h.hit.u, h.hit.v);
-          float3 d = sy2.p - so[k].p, phi2;
-          float photon_ratio;
+          float3 d = sy2.p - so[k].p;
           float2 parent_pdfs;
           if (dot(d, d) <= r2 &&
               photon_shift_eval(&s, &pa, sy.p, sy.ng, phi, &sy2, &phi2, &photon_ratio, &parent_pdfs)) {
-            float3 wi2 = photon_toward_parent(&pa, sy2.p);
-            co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
-                 photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
-            formed = max3(co) > 0.0f;
-            ratio = rec.ratio[k] * photon_ratio;
+            moved = 1;
+            wi2 = photon_toward_parent(&pa, sy2.p);
 #if defined(GDR_GVCM)
-            if (formed) {
-              float y2_dvcm, y2_dvc, y2_dvm;
-              photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, parent_pdfs, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
-              oy = MERGE_OTHERS(MERGE_PDFS(&bo[k], &fo[k], wo_o[k], wi2), y2_dvcm, y2_dvm, &rec.offset[k],
-                                rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
-            }
+            photon_shift_sums(&pa, &y, sy.p, sy.ng, &sy2, parent_pdfs, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
 #endif
           }
         }
-        lost += !formed;
       }
 #if defined(GPM_PHOTON_WALKS)
       else if (own[k] && chained) {
         // The walk gpm_photon_walks started for this ray, if the ray found a photon in the radius.
-        uint wi = r0 + (uint)k < ray_capacity ? walk_of[r0 + (uint)k] : GPM_NO_WALK;
-        if (wi != GPM_NO_WALK) {
-          GdrManifoldResult res = walk_results[wi];
-          GdrManifoldWalk W = walks[wi];
-          Surface sy2 = surface_at(&s, W.start.prim, W.start.b1, W.start.b2);
-          float3 phi2, wi2;
-          float photon_ratio;
-          const int reversible = shadow_unoccluded(reverse_rays[wi].tfar);
+        uint walk = r0 + (uint)k < ray_capacity ? walk_of[r0 + (uint)k] : GPM_NO_WALK;
+        if (walk != GPM_NO_WALK) {
+          tried = 2;
+          GdrManifoldResult res = walk_results[walk];
+          GdrManifoldPoint start = walks[walk].start;
+          Surface sy2 = surface_at(&s, start.prim, start.b1, start.b2);
+          const int reversible = shadow_unoccluded(reverse_rays[walk].tfar);
           irreversible += res.status == 0 && !reversible;
-          if (res.status == 0 && reversible && res.g_walk > 0.0f && res.g_origin > 0.0f &&
-              photon_chain_eval(&s, &ch, &W, &res, &sy, &sy2, phi, &phi2, &photon_ratio, &wi2)) {
-            co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
-                 photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
-            formed = max3(co) > 0.0f;
-            ratio = rec.ratio[k] * photon_ratio;
+          if (res.status == 0 && reversible && res.g_walk > 0.0f && res.g_origin > 0.0f) {
+            PhotonChainPoints pts = photon_chain_points(&s, &ch, &res, &sy, &sy2);
+            float2 chain_pdfs;
+            moved = photon_chain_eval(&s, &ch, &res, &pts, &sy, &sy2, phi, &phi2, &photon_ratio, &wi2, &chain_pdfs);
 #if defined(GDR_GVCM)
-            if (formed) {
-              float y2_dvcm, y2_dvc, y2_dvm;
-              photon_chain_sums(&s, &ch, &res, &y, &sy, &sy2, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
-              oy = MERGE_OTHERS(MERGE_PDFS(&bo[k], &fo[k], wo_o[k], wi2), y2_dvcm, y2_dvm, &rec.offset[k],
-                                rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
+            if (moved) {
+              photon_chain_sums(&s, &ch, &res, &pts, chain_pdfs, &y, &sy, &sy2, &mo, &y2_dvcm, &y2_dvc, &y2_dvm);
             }
 #endif
           }
-          walked += formed;
-          unwalked += !formed;
         } else {
           lost += 1;
         }
       }
 #endif
+      if (moved) {
+        co = vload3(0, rec.offset[k].throughput) * opts.vm_normalization *
+             photon_merge_value(&bo[k], &fo[k], so[k].ng, wo_o[k], wi2) * phi2;
+        formed = max3(co) > 0.0f;
+        ratio = rec.ratio[k] * photon_ratio;
+        if (formed) {
+          oy = MERGE_OTHERS(MERGE_PDFS(&bo[k], &fo[k], wo_o[k], wi2), y2_dvcm, y2_dvm, &rec.offset[k],
+                            rec.all_dvcm[1 + k], rec.all_dvm[1 + k], &mo);
+        }
+      }
+      lost += tried == 1 && !formed;
+      walked += tried == 2 && formed;
+      unwalked += tried == 2 && !formed;
       float2 w = gbdpt_pair_weights(ox, oy, ratio, formed);
       sum_base[k] += w.x * cb;
       if (formed) sum_off[k] += w.y * co;

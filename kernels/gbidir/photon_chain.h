@@ -120,30 +120,37 @@ inline float3 chain_delta_value(const SceneData* s, GdrManifoldPoint at, int tra
   return so.weight * so.pdf * shading_normal_correction(wo, wi, su.ng, wo_l.z, wi_l.z);
 }
 
-// The chain's points for base and offset, b first: b, s_1 .. s_m and the photon (sy, sy2), the
-// offset's from solved walk R.
-inline void photon_chain_points(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
-                                const Surface* sy, const Surface* sy2, float3* bp, float3* op) {
+// The chain's points for base and offset, b first: b, s_1 .. s_m and the photon (y, y').
+typedef struct PhotonChainPoints {
+  float3 base[MANIFOLD_MAX_CHAIN + 2], offset[MANIFOLD_MAX_CHAIN + 2];
+} PhotonChainPoints;
+
+// Those of chain ch and its photon sy, and of solved walk R and the offset photon sy2.
+inline PhotonChainPoints photon_chain_points(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
+                                             const Surface* sy, const Surface* sy2) {
+  PhotonChainPoints pts;
   const int m = ch->count;
-  bp[0] = op[0] = manifold_point_on(s, ch->end);
+  pts.base[0] = pts.offset[0] = manifold_point_on(s, ch->end);
   for (int i = 0; i < m; ++i) {
-    bp[i + 1] = manifold_point_on(s, ch->v[i]);
-    op[i + 1] = manifold_point_on(s, R->v[m - 1 - i]);
+    pts.base[i + 1] = manifold_point_on(s, ch->v[i]);
+    pts.offset[i + 1] = manifold_point_on(s, R->v[m - 1 - i]);
   }
-  bp[m + 1] = sy->p;
-  op[m + 1] = sy2->p;
+  pts.base[m + 1] = sy->p;
+  pts.offset[m + 1] = sy2->p;
+  return pts;
 }
 
-// The offset photon of solved walk W (result R) for base photon y (throughput phi) along chain ch:
-// its throughput (*phi2), the density ratio p(y') / p(y) of the chain's segments (*ratio) and its
-// direction toward the chain (*wi2); 0 where it carries nothing (a delta surface at y', a side
-// its shading frame disagrees with, a lobe missing).
-inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const GdrManifoldWalk* W,
-                             const GdrManifoldResult* R, const Surface* sy, const Surface* sy2, float3 phi,
-                             float3* phi2, float* ratio, float3* wi2) {
+// The offset photon of solved walk R (points pts) for base photon y (throughput phi) along chain
+// ch: its throughput (*phi2), the density ratio p(y') / p(y) of the chain's segments (*ratio), its
+// direction toward the chain (*wi2) and b's direction pdfs toward the base and the new chain
+// (*pdfs); 0 where it carries nothing (a delta surface at y', a side its shading frame disagrees
+// with, a lobe missing).
+inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
+                             const PhotonChainPoints* pts, const Surface* sy, const Surface* sy2, float3 phi,
+                             float3* phi2, float* ratio, float3* wi2, float2* pdfs) {
   const int m = ch->count;
-  float3 bp[MANIFOLD_MAX_CHAIN + 2], op[MANIFOLD_MAX_CHAIN + 2];  // b, s_1 .. s_m, y: base and offset
-  photon_chain_points(s, ch, R, sy, sy2, bp, op);
+  const float3 *bp = pts->base, *op = pts->offset;
+  *pdfs = (float2)(0.0f);
   *wi2 = normalize(op[m] - op[m + 1]);
   Bsdf by2 = surface_bsdf(s, sy2);
   Frame f2 = frame_from_normal(sy2->ns);
@@ -151,6 +158,7 @@ inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const Gd
   float pdf, pdf2;
   float3 e = photon_parent_eval(s, &ch->parent, normalize(bp[1] - bp[0]), &pdf);
   float3 e2 = photon_parent_eval(s, &ch->parent, normalize(op[1] - op[0]), &pdf2);
+  *pdfs = (float2)(pdf, pdf2);
   float3 value = (float3)(safe_div(e2.x, e.x), safe_div(e2.y, e.y), safe_div(e2.z, e.z));
   float density = safe_div(pdf2, pdf);
   for (int i = 1; i <= m && density > 0.0f; ++i) {
@@ -189,34 +197,29 @@ inline float photon_chain_cosines(const SceneData* s, const PhotonChain* ch, con
 }
 
 // The light subpath's MIS sums (bidir/subpath_mis.h) at the offset photon of solved walk R, for
-// G-VCM's weights: those base photon y arrived with, its chain moved. Through a delta vertex dvcm
+// G-VCM's weights: those base photon y arrived with, its chain moved (points pts, b's direction
+// pdfs toward the base and the new chain: photon_chain_eval's). Through a delta vertex dvcm
 // becomes 0 and dvc and dvm change by cosines alone (photon_chain_cosines). From a rough parent b
 // they are b's sums scattered toward the new chain; from a light point, y's sums with the
 // emission's direction pdf and the light's cosine changed (the position pdf is the same point's).
 inline void photon_chain_sums(const SceneData* s, const PhotonChain* ch, const GdrManifoldResult* R,
-                              const GdrBidirVertex* y, const Surface* sy, const Surface* sy2,
-                              const GdrBidirOptions* o, float* dvcm, float* dvc, float* dvm) {
-  float3 bp[MANIFOLD_MAX_CHAIN + 2], op[MANIFOLD_MAX_CHAIN + 2];
-  photon_chain_points(s, ch, R, sy, sy2, bp, op);
+                              const PhotonChainPoints* pts, float2 pdfs, const GdrBidirVertex* y, const Surface* sy,
+                              const Surface* sy2, const GdrBidirOptions* o, float* dvcm, float* dvc, float* dvm) {
   const PhotonParent* pa = &ch->parent;
-  float3 w = normalize(bp[1] - bp[0]), w2 = normalize(op[1] - op[0]);
-  float chain2 = photon_chain_cosines(s, ch, R, op, sy2->ng, 1);
+  float3 w = normalize(pts->base[1] - pts->base[0]), w2 = normalize(pts->offset[1] - pts->offset[0]);
+  float chain2 = photon_chain_cosines(s, ch, R, pts->offset, sy2->ng, 1);
   *dvcm = *dvc = *dvm = 0.0f;
+  if (!(pdfs.y > 0.0f)) return;
   if (pa->kind == GPM_PARENT_SURFACE) {
     float3 wo_l = frame_to_local(&pa->frame, pa->wo), w2_l = frame_to_local(&pa->frame, w2);
-    float pdf2 = bsdf_pdf(&pa->b, wo_l, w2_l);
-    if (!(pdf2 > 0.0f)) return;
     float c = pa->dvcm, v = pa->dvc, m = pa->dvm;
-    mis_sums_scatter(0, pdf2, bsdf_pdf(&pa->b, w2_l, wo_l), fabs(dot(pa->ng, w2)), o, &c, &v, &m);
+    mis_sums_scatter(0, pdfs.y, bsdf_pdf(&pa->b, w2_l, wo_l), fabs(dot(pa->ng, w2)), o, &c, &v, &m);
     *dvc = v * mis_power_of(chain2, o->mis);
     *dvm = m * mis_power_of(chain2, o->mis);
     return;
   }
-  float pdf, pdf2;
-  photon_parent_eval(s, pa, w, &pdf);
-  photon_parent_eval(s, pa, w2, &pdf2);
-  float chain = photon_chain_cosines(s, ch, R, bp, sy->ng, 0);
-  float scale = safe_div(pdf * fabs(dot(pa->ng, w2)) * chain2, pdf2 * fabs(dot(pa->ng, w)) * chain);
+  float chain = photon_chain_cosines(s, ch, R, pts->base, sy->ng, 0);
+  float scale = safe_div(pdfs.x * fabs(dot(pa->ng, w2)) * chain2, pdfs.y * fabs(dot(pa->ng, w)) * chain);
   if (!(scale > 0.0f) || !isfinite(scale)) return;
   *dvc = y->dvc * mis_power_of(scale, o->mis);
   *dvm = y->dvm * mis_power_of(scale, o->mis);

@@ -207,7 +207,7 @@ void expect_sums_unshifted(const Scene& scene, const std::string& what, std::vec
 }
 
 // G-VCM's sums for a photon behind delta vertices whose chain stays where it is
-// (photon_chain_sums, kernels/tests/photon_chain_test.cl), against those the light subpath carried
+// (photon_chain_sums, kernels/tests/photon_shift_test.cl), against those the light subpath carried
 // to the photon: both chain ends (a rough vertex and the light) occur, and dvcm is 0 on both sides.
 TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 32);
@@ -218,7 +218,7 @@ TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
   const PhotonGrid grid = batch.subpaths.grid();
   Buffer<cl_float4> b_out(batch.in.context, size_t(2) * batch.entries);
   Buffer<cl_int> b_kind(batch.in.context, batch.entries);
-  kernels.make("tests/photon_chain_test.cl", "photon_chain_sums_unmoved")
+  kernels.make("tests/photon_shift_test.cl", "photon_chain_sums_unmoved")
       .args(batch.p, batch.o, batch.entries, cl_uint(batch.subpaths.capacity()), batch.subpaths.light_paths(),
             batch.subpaths.store(), batch.subpaths.origins(), grid.delta_points, grid.delta_depths, b_out, b_kind,
             batch.in.device_scene)
