@@ -13,7 +13,7 @@
 #include "image/image_metrics.h"
 #include "integrators/bidir/bidirectional.h"
 #include "scene/load_scene.h"
-#include "support/agreement.h"
+#include "support/consistent_gradients.h"
 #include "support/render.h"
 #include "support/test_scenes.h"
 #include "util/error.h"
@@ -21,59 +21,31 @@
 namespace gdr {
 namespace {
 
-struct Box {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml"), 32);
-  test::SceneOnDevice on_device{scene};
-  std::vector<float> reference_;
-
-  // Rendered on first use: the tests that do not compare with it do not pay for it.
-  const std::vector<float>& reference() {
-    if (reference_.empty()) {
-      RenderSettings s;
-      s.spp = 4096;
-      s.seed = 500;
-      s.max_depth = 6;
-      reference_ = PathTracer(on_device.inputs(), PtSettings{}).render(s).image.rgb_layer("");
-    }
-    return reference_;
-  }
-};
-
-Box& box() {
-  static Box b;
+// The diffuse Cornell box at 32 x 32 and its reference (support/consistent_gradients.h).
+test::ConsistencyScene& box() {
+  static test::ConsistencyScene b("cornell-box.xml");
   return b;
 }
 
+const std::vector<float>& reference() {
+  box().render_reference();
+  return box().reference_;
+}
+
 std::vector<float> render(Integrator& integrator, int spp, uint32_t seed) {
-  RenderSettings s;
-  s.spp = spp;
-  s.seed = seed;
-  s.max_depth = 6;
-  return integrator.render(s).image.rgb_layer("");
+  return integrator.render(test::consistency_settings(spp, seed)).image.rgb_layer("");
 }
 
-double relmse(const std::vector<float>& a, const std::vector<float>& ref) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    double d = double(a[i]) - ref[i];
-    sum += d * d / (double(ref[i]) * ref[i] + 1e-2);
-  }
-  return sum / double(a.size());
-}
-
-double mean(const std::vector<float>& v) {
-  double s = 0;
-  for (float x : v) s += x;
-  return s / double(v.size());
-}
+using test::mean;
+using test::relmse;
 
 // Error at 4, 16 and 64 passes, each the mean over two seeds.
 void expect_error_falls(const BidirSettings& settings, const char* name) {
   Bidirectional integrator(box().on_device.inputs(), settings);
   double previous = INFINITY;
   for (int spp : {4, 16, 64}) {
-    double e = 0.5 * (relmse(render(integrator, spp, 1), box().reference()) +
-                      relmse(render(integrator, spp, 2), box().reference()));
+    double e = 0.5 * (relmse(render(integrator, spp, 1), reference()) +
+                      relmse(render(integrator, spp, 2), reference()));
     // Variance falls as 1 / passes and the bias with the radius: each fourfold of passes at
     // least halves the error (measured: pm 0.27, 0.029, 0.0079; vcm 0.24, 0.018, 0.0035).
     EXPECT_LT(e, 0.5 * previous) << name << " at " << spp << " passes";
@@ -88,7 +60,7 @@ void expect_small_bias(const BidirSettings& settings, const char* name) {
   Bidirectional integrator(box().on_device.inputs(), settings);
   double sum = 0;
   for (uint32_t seed = 1; seed <= 8; ++seed) sum += mean(render(integrator, 16, seed));
-  EXPECT_NEAR(sum / 8 / mean(box().reference()), 1.0, 0.03) << name;
+  EXPECT_NEAR(sum / 8 / mean(reference()), 1.0, 0.03) << name;
 }
 
 // One test per technique for both checks: they share the reference (each test is a process).

@@ -42,7 +42,8 @@ ConsistencyScene& sky_box() {
   static std::unique_ptr<ConsistencyScene> b = std::make_unique<ConsistencyScene>(test::scene_with_environment(
       8, 4, std::vector<float>(32, 1.0f),
       test::spheres_on_plane_xml(R"(<emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>)",
-                                 R"(<bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.6, 0.3"/></bsdf>)")));
+                                 R"(<bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.6, 0.3"/></bsdf>)")),
+      "two spheres on a plane under a uniform sky");
   return *b;
 }
 

@@ -14,6 +14,7 @@
 #include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/gradient_unbiased.h"
+#include "support/reference_cache.h"
 #include "support/render.h"
 #include "support/test_scenes.h"
 
@@ -23,29 +24,40 @@ struct ConsistencyScene {
   static constexpr int kMaxDepth = 6;
 
   explicit ConsistencyScene(const std::string& file)
-      : scene(small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32)) {}
-  explicit ConsistencyScene(Scene s) : scene(std::move(s)) {}
+      : name(file), scene(small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32)) {}
+  // `name` tells the reference cache which scene this is.
+  ConsistencyScene(Scene s, std::string name) : name(std::move(name)), scene(std::move(s)) {}
+  std::string name;
   Scene scene;
   SceneOnDevice on_device{scene};
   std::vector<float> reference_, ref_dx_, ref_dy_;
   std::vector<char> pairs_x_, pairs_y_;  // the neighbour pairs neither of which sees the light
 
-  // Rendered on first use. The light seen directly (the reference at max_depth 1) marks the pixels
-  // whose differences the gradient errors leave out: at the light's edge a pixel's coverage of it
-  // is a coin flip per sample, as noisy in every integrator's directly seen emission, and would
-  // outweigh everything else.
+  // Rendered on first use, once for the suite (support/reference_cache.h). The light seen directly
+  // (the reference at max_depth 1) marks the pixels whose differences the gradient errors leave
+  // out: at the light's edge a pixel's coverage of it is a coin flip per sample, as noisy in every
+  // integrator's directly seen emission, and would outweigh everything else.
   void render_reference() {
     if (!reference_.empty()) return;
+    const int w = scene.camera.width, h = scene.camera.height;
     RenderSettings s;
     s.spp = 4096;
     s.seed = 500;
     s.max_depth = kMaxDepth;
-    PathTracer pt(on_device.inputs(), PtSettings{});
-    reference_ = pt.render(s).image.rgb_layer("");
-    const int w = scene.camera.width, h = scene.camera.height;
+    const std::string key = "consistency reference of " + name + ", " + std::to_string(w) + "x" + std::to_string(h) +
+                            ", pt " + std::to_string(s.spp) + " spp, seed " + std::to_string(s.seed) +
+                            ", max_depth " + std::to_string(s.max_depth) + " and 1";
+    const std::vector<float> both = cached_render(on_device.context, key, [&] {
+      PathTracer pt(on_device.inputs(), PtSettings{});
+      std::vector<float> values = pt.render(s).image.rgb_layer("");
+      s.max_depth = 1;
+      const std::vector<float> direct = pt.render(s).image.rgb_layer("");
+      values.insert(values.end(), direct.begin(), direct.end());
+      return values;
+    });
+    reference_.assign(both.begin(), both.begin() + std::ptrdiff_t(both.size() / 2));
+    const std::vector<float> direct(both.begin() + std::ptrdiff_t(both.size() / 2), both.end());
     differences(w, h, reference_, ref_dx_, ref_dy_);
-    s.max_depth = 1;
-    const std::vector<float> direct = pt.render(s).image.rgb_layer("");
     auto dark = [&](int x, int y) {
       size_t i = 3 * (size_t(y) * w + x);
       return direct[i] == 0.0f && direct[i + 1] == 0.0f && direct[i + 2] == 0.0f;
