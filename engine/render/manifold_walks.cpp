@@ -10,7 +10,7 @@ namespace gdr {
 static_assert(sizeof(GdrManifoldPoint) == 12, "GdrManifoldPoint layout changed");
 static_assert(sizeof(GdrManifoldVertex) == 32, "GdrManifoldVertex layout changed");
 static_assert(sizeof(GdrManifoldWalk) == 48 + 32 * MANIFOLD_MAX_CHAIN, "GdrManifoldWalk layout changed");
-static_assert(sizeof(GdrManifoldResult) == 16 + 12 * MANIFOLD_MAX_CHAIN, "GdrManifoldResult layout changed");
+static_assert(sizeof(GdrManifoldResult) == 24 + 12 * MANIFOLD_MAX_CHAIN, "GdrManifoldResult layout changed");
 static_assert(sizeof(GdrManifoldParams) == 16, "GdrManifoldParams layout changed");
 
 const std::vector<std::string> kManifoldParams = {"manifold_iterations", "manifold_tolerance", "manifold_precision"};

@@ -7,11 +7,10 @@
 // y), its x_e is b, its vertices the chain from the photon's side. The offset's throughput and
 // density change by the parent's F and pdf toward the new chain (photon_parent_eval), each delta
 // vertex's lobe value and probability (with importance transport's shading-normal factor), and
-// the generalized geometry term from b to the photon, which the walk's g (|d w_0 / dA(x_e)|, seen
-// from the photon) gives turned around by the conservation of etendue:
-//   |d w_b / dA(y)| = |d w_y / dA(b)| cos_y / cos_b,
-// the cosines those of the chain's end segments at y and b (the media's indices at the two ends
-// are the same for base and offset, and cancel). The photon's move onto its own surface counts 1,
+// the generalized geometry term |d w_b / dA(y)| from b to the photon, which the walk gives seen
+// from its fixed end x_e = b (g_walk_at_end; the term seen from the photon, turned around by the
+// end cosines, is off by up to several percent where interpolated normals bend the chain: tests/
+// gbidir/test_photon_shift.cpp). The photon's move onto its own surface counts 1,
 // as for the reconnection (gbidir/photon_shift.h). The walk itself checks that it leads back to
 // the base chain; the merge stage also checks that the new chain's last vertex sees the base
 // photon (the reverse shift's ray: gbidir/merge.h). Built where gpm or gvcm walks (GDR_MANIFOLD).
@@ -170,10 +169,7 @@ inline int photon_chain_eval(const SceneData* s, const PhotonChain* ch, const Gd
     value *= (float3)(safe_div(v2.x, v.x), safe_div(v2.y, v.y), safe_div(v2.z, v.z));
     density *= safe_div(lp2, lp);
   }
-  float cos_b = fabs(dot(ch->parent.ng, normalize(bp[1] - bp[0])));
-  float cos_b2 = fabs(dot(ch->parent.ng, normalize(op[1] - op[0])));
-  float cos_y = fabs(dot(sy->ng, normalize(bp[m] - bp[m + 1]))), cos_y2 = fabs(dot(sy2->ng, *wi2));
-  float g = safe_div(R->g_walk * cos_y2 * cos_b, R->g_origin * cos_y * cos_b2);
+  float g = safe_div(R->g_walk_at_end, R->g_origin_at_end);
   *phi2 = phi * value * g;
   *ratio = density * g;
   return max3(*phi2) > 0.0f && *ratio > 0.0f && isfinite(*ratio) && all(isfinite(*phi2));

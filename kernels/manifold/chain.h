@@ -36,16 +36,19 @@ inline int manifold_factor(const SceneData* sd, const ManifoldChain* ch, M2* A, 
 // dx_1/dx_e (plane coordinates of x_1 per plane coordinates of x_e, x_0 fixed) at a chain whose
 // constraints hold: the right-hand side -C_m dx_e sits in the last row only, so back
 // substitution gives X_m = -U_m^-1 C_m, X_i = -U_i^-1 C_i X_{i+1}.
+inline M2 manifold_end_back_substitution(int m, const M2* C, const M2* Uinv) {
+  M2 X = m2_neg(m2_mul(Uinv[m - 1], C[m - 1]));
+  for (int i = m - 2; i >= 0; --i) X = m2_neg(m2_mul(Uinv[i], m2_mul(C[i], X)));
+  return X;
+}
+
+// The same for chain ch. Returns 0 or the MANIFOLD_COUNTER_FAIL_* reason.
 inline int manifold_end_derivative(const SceneData* sd, const ManifoldChain* ch, M2* dx1) {
-  const int m = ch->count;
   M2 A[MANIFOLD_MAX_CHAIN], C[MANIFOLD_MAX_CHAIN], Uinv[MANIFOLD_MAX_CHAIN];
   int r = manifold_factor(sd, ch, A, C, Uinv);
   if (r) return r;
-  M2 X = m2_neg(m2_mul(Uinv[m - 1], C[m - 1]));
-  for (int i = m - 2; i >= 0; --i) X = m2_neg(m2_mul(Uinv[i], m2_mul(C[i], X)));
-  if (!isfinite(m2_det(X))) return MANIFOLD_COUNTER_FAIL_SINGULAR;
-  *dx1 = X;
-  return 0;
+  *dx1 = manifold_end_back_substitution(ch->count, C, Uinv);
+  return isfinite(m2_det(*dx1)) ? 0 : MANIFOLD_COUNTER_FAIL_SINGULAR;
 }
 
 // Where x_1 moves to first order when x_0 moves to `start` (x_e fixed): the right-hand side
@@ -66,13 +69,38 @@ inline int manifold_start_move(const SceneData* sd, const ManifoldChain* ch, mre
   return 0;
 }
 
-// |d omega_0 / dA(x_e)| from dx_1/dx_e: the area x_1 sweeps per unit area of x_e, seen from x_0.
-inline mreal manifold_geometry(const ManifoldChain* ch, M2 dx1) {
-  mreal3 d = ch->x[1].p - ch->x[0].p;
+// The solid angle per unit area that vertex `to`, moving by dx (plane coordinates per unit area
+// of the moved end), sweeps as seen from `from`.
+inline mreal manifold_swept(const ManifoldSurface* from, const ManifoldSurface* to, M2 dx) {
+  mreal3 d = to->p - from->p;
   mreal r2 = dot(d, d);
   if (!(r2 > (mreal)0)) return 0;
-  mreal cos1 = fabs(dot(d, ch->x[1].ng)) / sqrt(r2);
-  return fabs(m2_det(dx1)) * cos1 / r2;
+  mreal cos_to = fabs(dot(d, to->ng)) / sqrt(r2);
+  return fabs(m2_det(dx)) * cos_to / r2;
+}
+
+// |d omega_0 / dA(x_e)| from dx_1/dx_e: the area x_1 sweeps per unit area of x_e, seen from x_0.
+inline mreal manifold_geometry(const ManifoldChain* ch, M2 dx1) { return manifold_swept(&ch->x[0], &ch->x[1], dx1); }
+
+// Both generalized geometry terms of a chain whose constraints hold: |d omega_0 / dA(x_e)| (*g,
+// x_0 fixed) and |d omega_e / dA(x_0)| (*g_at_end, x_e fixed), the latter from dx_m/dx_0: the
+// right-hand side -A_1 dx_0 sits in the first row only, so forward elimination alone gives it,
+// X_m = U_m^-1 (-A_m U_{m-1}^-1) .. (-A_1). Shading normals that vary over flat triangles make
+// the chain's map lose etendue, so the one is not the other turned around by the end cosines
+// (a photon's density needs the second: gbidir/photon_chain.h). Returns 0 or the
+// MANIFOLD_COUNTER_FAIL_* reason.
+inline int manifold_geometries(const SceneData* sd, const ManifoldChain* ch, float* g, float* g_at_end) {
+  const int m = ch->count;
+  M2 A[MANIFOLD_MAX_CHAIN], C[MANIFOLD_MAX_CHAIN], Uinv[MANIFOLD_MAX_CHAIN];
+  int r = manifold_factor(sd, ch, A, C, Uinv);
+  if (r) return r;
+  M2 X1 = manifold_end_back_substitution(m, C, Uinv), Xm = m2_neg(A[0]);
+  for (int i = 1; i < m; ++i) Xm = m2_neg(m2_mul(A[i], m2_mul(Uinv[i - 1], Xm)));
+  Xm = m2_mul(Uinv[m - 1], Xm);
+  if (!isfinite(m2_det(X1)) || !isfinite(m2_det(Xm))) return MANIFOLD_COUNTER_FAIL_SINGULAR;
+  *g = (float)manifold_geometry(ch, X1);
+  *g_at_end = (float)manifold_swept(&ch->x[m + 1], &ch->x[m], Xm);
+  return 0;
 }
 
 // The Newton step: where x_1 goes so that the chain's end moves by beta toward `target`.

@@ -60,7 +60,7 @@ __kernel void manifold_begin(uint count, __global uint* states, uint capacity, _
   set_state_int(s, MANIFOLD_STATE_ACCEPTED, 0);
   results[w].status = 0;
   results[w].iterations = 0;
-  results[w].g_walk = results[w].g_origin = 0.0f;
+  results[w].g_walk = results[w].g_origin = results[w].g_walk_at_end = results[w].g_origin_at_end = 0.0f;
   active[w] = w;
   atomic_inc(&counters[MANIFOLD_COUNTER_WALKS]);
 }
@@ -223,16 +223,16 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
     // Converged: the chain ends at x_e itself.
     ManifoldChain ch;
     manifold_load_chain(&sd, &W, walk_start(&W, &st), st.chain, W.end, &ch);
-    M2 dx1;
-    int r = manifold_end_derivative(&sd, &ch, &dx1);
+    float g, g_at_end;
+    int r = manifold_geometries(&sd, &ch, &g, &g_at_end);
     if (r) {
       walk_fail(res, counters, r);
       return;
     }
-    float g = (float)manifold_geometry(&ch, dx1);
     if (st.phase == 0) {
       for (int k = 0; k < m; ++k) res->v[k] = st.chain[k];
       res->g_walk = g;
+      res->g_walk_at_end = g_at_end;
       st.phase = 1;
       st.iterations = 0;
       st.accepted = 0;
@@ -250,11 +250,12 @@ __kernel void manifold_accept(GdrManifoldParams params, uint count, __global con
         GdrManifoldPoint base[MANIFOLD_MAX_CHAIN];
         for (int k = 0; k < m; ++k) base[k] = W.v[k].at;
         manifold_load_chain(&sd, &W, W.origin, base, W.end, &ch);
-        r = manifold_end_derivative(&sd, &ch, &dx1);
+        r = manifold_geometries(&sd, &ch, &g, &g_at_end);
         if (r) {
           walk_fail(res, counters, r);
         } else {
-          res->g_origin = (float)manifold_geometry(&ch, dx1);
+          res->g_origin = g;
+          res->g_origin_at_end = g_at_end;
           atomic_inc(&counters[MANIFOLD_COUNTER_SOLVED]);
         }
       }

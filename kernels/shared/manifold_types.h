@@ -45,6 +45,8 @@ typedef struct GdrManifoldResult {
   int iterations;  // Newton iterations of both walks
   float g_walk;    // generalized geometry term |d omega_0 / dA(x_e)| of the new chain
   float g_origin;  // the same of the base chain: |J| of the shift is g_walk / g_origin
+  float g_walk_at_end;    // |d omega_e / dA(x_0)| of the new chain (x_e fixed)
+  float g_origin_at_end;  // the same of the base chain
   GdrManifoldPoint v[MANIFOLD_MAX_CHAIN];  // the new chain's specular vertices
 } GdrManifoldResult;
 

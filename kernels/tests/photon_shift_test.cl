@@ -2,7 +2,8 @@
 // photon's target inverts and keeps its distance from the gather point, the geometry term against
 // the solid angle a small patch subtends, and G-VCM's light-side sums of photons left in place,
 // also (built with the manifold solver's defines and GDR_GVCM) behind delta vertices
-// (gbidir/photon_chain.h).
+// (gbidir/photon_chain.h), where the manifold photon shift's walks are also checked against finite
+// differences and shifted there and back.
 #include "gbidir/photon_shift.h"
 #if defined(GDR_MANIFOLD)
 #include "gbidir/photon_chain.h"
@@ -91,7 +92,7 @@ __kernel void photon_chain_sums_unmoved(GdrPtParams params, GdrBidirOptions opts
     return;
   }
   GdrManifoldResult R;
-  R.g_walk = R.g_origin = 1.0f;
+  R.g_walk = R.g_origin = R.g_walk_at_end = R.g_origin_at_end = 1.0f;
   for (int i = 0; i < ch.count; ++i) R.v[ch.count - 1 - i] = ch.v[i];
   Surface sy = surface_at(&s, y.prim, y.u, y.v);
   PhotonChainPoints pts = photon_chain_points(&s, &ch, &R, &sy, &sy);
@@ -103,5 +104,127 @@ __kernel void photon_chain_sums_unmoved(GdrPtParams params, GdrBidirOptions opts
   kind[e] = ch.parent.kind;
   out[2 * e] = (float4)(y.dvcm, dvcm, y.dvm, dvm);
   out[2 * e + 1] = (float4)(y.dvc, dvc, (float)ch.count, 0.0f);
+}
+
+// The manifold photon shift's walks and their evaluation, for a density and round-trip check: for
+// each store entry e whose photon y has a chain of delta vertices behind it (photon_chain), six
+// walks along the chain with b fixed, at walks[6 k ..] (k from counters[0], owner e), from y's
+// base chain to: y itself, y moved by +-h along its surface's tangents s and t, and y moved by d
+// along s (the offset photon y'). kind[e]: the chain end's kind (GPM_PARENT_*), or GPM_PARENT_NONE.
+__kernel void photon_chain_test_walks(GdrPtParams params, uint entries, uint stride,
+                                      __global const GdrBidirPathState* light_paths,
+                                      __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                      __global const GdrManifoldPoint* delta_points, uint delta_depths, float h,
+                                      float d, __global GdrManifoldWalk* walks, __global uint* counters,
+                                      __global int* kind, SCENE_DATA_ARGS) {
+  uint e = get_global_id(0);
+  if (e >= entries || !batch_entry_stored(&params, e, stride, light_paths, kind)) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  GdrBidirVertex y = store[e];
+  PhotonChain ch;
+  int reason;
+  kind[e] = GPM_PARENT_NONE;
+  if (photon_parent(&s, store, origins, stride, e, &y).kind != GPM_PARENT_NONE ||
+      !photon_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch, &reason)) {
+    return;
+  }
+  kind[e] = ch.parent.kind;
+  Surface sy = surface_at(&s, y.prim, y.u, y.v);
+  Frame f = frame_from_normal(sy.ng);
+  const float3 moves[6] = {(float3)(0.0f), h * f.s, -h * f.s, h * f.t, -h * f.t, d * f.s};
+  GdrManifoldPoint origin = {y.prim, y.u, y.v};
+  uint k = atomic_inc(&counters[0]);
+  for (int i = 0; i < 6; ++i) {
+    // The moved point on y's triangle's plane (the photon's surface, flat in the scenes tested).
+    GdrManifoldPoint at = i == 0 ? origin : manifold_refine_hit(&s, y.prim, sy.p + moves[i] + sy.ng, -sy.ng);
+    walks[6 * k + i] = photon_chain_walk(&s, &ch, origin, at, e);
+  }
+}
+
+// The chain of entry e's photon solved by walk R: the offset photon's chain, for a shift back.
+inline PhotonChain photon_chain_moved(const PhotonChain* ch, const GdrManifoldResult* R) {
+  PhotonChain c = *ch;
+  for (int i = 0; i < ch->count; ++i) c.v[i] = R->v[ch->count - 1 - i];
+  return c;
+}
+
+// Rebuilds the chain of the entry that owns walk slot k (photon_chain_test_walks).
+inline void photon_chain_test_entry(const SceneData* s, __global const GdrManifoldWalk* walks, uint k,
+                                    __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                    __global const GdrManifoldPoint* delta_points, uint delta_depths, uint stride,
+                                    GdrBidirVertex* y, PhotonChain* ch) {
+  uint e = walks[6 * k].owner;
+  int reason;
+  *y = store[e];
+  photon_chain(s, store, origins, delta_points, delta_depths, stride, e, y, ch, &reason);
+}
+
+// For each walk slot k whose shift to y' (walk 6 k + 5) was solved: the walk back from y' along
+// its solved chain to y, at back[k] (a copy of walk 6 k + 5 where that walk failed).
+__kernel void photon_chain_test_back(GdrPtParams params, uint count, __global const GdrManifoldWalk* walks,
+                                     __global const GdrManifoldResult* results, __global const GdrBidirVertex* store,
+                                     __global const GdrLightOrigin* origins,
+                                     __global const GdrManifoldPoint* delta_points, uint delta_depths, uint stride,
+                                     __global GdrManifoldWalk* back, SCENE_DATA_ARGS) {
+  uint k = get_global_id(0);
+  if (k >= count) return;
+  back[k] = walks[6 * k + 5];
+  GdrManifoldResult R = results[6 * k + 5];
+  if (R.status != 0) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  GdrBidirVertex y;
+  PhotonChain ch;
+  photon_chain_test_entry(&s, walks, k, store, origins, delta_points, delta_depths, stride, &y, &ch);
+  PhotonChain ch2 = photon_chain_moved(&ch, &R);
+  back[k] = photon_chain_walk(&s, &ch2, walks[6 * k + 5].start, walks[6 * k].start, k);
+}
+
+// For each walk slot k, out[8 k ..]: for walks 0 .. 4, (b's direction toward the solved chain,
+// 1 where solved); out[8 k + 5] = (|d w_b / dA(y)| of walk 0 (its g_walk_at_end), the chain's
+// length, 0, 0); out[8 k + 6] = (p(y') / p(y) of the shift to y', p(y) / p(y') of
+// the shift back, 1 where each was evaluated); out[8 k + 7] = (the throughput the shift back gives
+// y, over y's own, per channel; 0).
+__kernel void photon_chain_test_eval(GdrPtParams params, uint count, __global const GdrManifoldWalk* walks,
+                                     __global const GdrManifoldResult* results,
+                                     __global const GdrManifoldResult* back_results,
+                                     __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
+                                     __global const GdrManifoldPoint* delta_points, uint delta_depths, uint stride,
+                                     __global float4* out, SCENE_DATA_ARGS) {
+  uint k = get_global_id(0);
+  if (k >= count) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  GdrBidirVertex y;
+  PhotonChain ch;
+  photon_chain_test_entry(&s, walks, k, store, origins, delta_points, delta_depths, stride, &y, &ch);
+  const int m = ch.count;
+  float3 b = manifold_point_on(&s, ch.end);
+  for (int i = 0; i < 5; ++i) {
+    GdrManifoldResult R = results[6 * k + i];
+    float3 w = R.status == 0 ? normalize(manifold_point_on(&s, R.v[m - 1]) - b) : (float3)(0.0f);
+    out[8 * k + i] = (float4)(w, R.status == 0 ? 1.0f : 0.0f);
+  }
+  Surface sy = surface_at(&s, y.prim, y.u, y.v);
+  GdrManifoldResult R0 = results[6 * k];
+  out[8 * k + 5] = (float4)(R0.status == 0 ? R0.g_walk_at_end : 0.0f, (float)m, 0.0f, 0.0f);
+  out[8 * k + 6] = out[8 * k + 7] = (float4)(0.0f);
+  GdrManifoldResult RA = results[6 * k + 5], RB = back_results[k];
+  if (RA.status != 0) return;
+  GdrManifoldPoint at = walks[6 * k + 5].start;
+  Surface sy2 = surface_at(&s, at.prim, at.b1, at.b2);
+  PhotonChainPoints pa = photon_chain_points(&s, &ch, &RA, &sy, &sy2);
+  float3 phi = vload3(0, y.throughput), phi2, wi2, phi_back;
+  float ratio_a = 0.0f, ratio_b = 0.0f;
+  float2 pdfs;
+  int a = photon_chain_eval(&s, &ch, &RA, &pa, &sy, &sy2, phi, &phi2, &ratio_a, &wi2, &pdfs);
+  int back = 0;
+  if (a && RB.status == 0) {
+    PhotonChain ch2 = photon_chain_moved(&ch, &RA);
+    PhotonChainPoints pb = photon_chain_points(&s, &ch2, &RB, &sy2, &sy);
+    back = photon_chain_eval(&s, &ch2, &RB, &pb, &sy2, &sy, phi2, &phi_back, &ratio_b, &wi2, &pdfs);
+  }
+  out[8 * k + 6] = (float4)(ratio_a, ratio_b, a ? 1.0f : 0.0f, back ? 1.0f : 0.0f);
+  if (back) {
+    out[8 * k + 7] = (float4)(safe_div(phi_back.x, phi.x), safe_div(phi_back.y, phi.y), safe_div(phi_back.z, phi.z), 0.0f);
+  }
 }
 #endif

@@ -2,8 +2,9 @@
 // mirror image), a glass slab (Snell's law across parallel faces, a 1-D equation) and a glass
 // sphere (a reference shot through the analytic sphere in double). From a base chain of another
 // start, each solve must reach the closed form within the tolerance in a few iterations, walk
-// back to the base chain, and report a generalized geometry term that agrees with a central
-// finite difference of the solution over the end point. Deterministic: no random numbers.
+// back to the base chain, and report generalized geometry terms that agree with central finite
+// differences of the solution over the end point and over the start point. Deterministic: no random
+// numbers.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -104,6 +105,31 @@ TEST_P(ManifoldWalkTest, GeometryTermMatchesFiniteDifferences) {
     V3 du = mul(sub(omega(1), omega(2)), 0.5 / h), dv = mul(sub(omega(3), omega(4)), 0.5 / h);
     double fd = norm(cross(du, dv));
     EXPECT_NEAR(r[0].g_walk / fd, 1.0, 0.01) << c.name << ": g_walk " << r[0].g_walk << ", finite differences " << fd;
+  }
+}
+
+// g_walk_at_end = |d omega_e / dA(x_0)| against central differences of the solved chain's last
+// direction, seen from the end, as the start point moves on its plate (x_e fixed).
+TEST_P(ManifoldWalkTest, EndGeometryTermMatchesFiniteDifferences) {
+  for (const Case& c : cases()) {
+    ChainScene s = c.setup();
+    ManifoldSettings m = settings_for(GetParam());
+    m.tolerance = GetParam() == "double" ? 2e-7f : 3e-6f;
+    m.reverse_factor = 1e9f;  // the closed form's chain is not quite the mesh sphere's
+    Solver solver(s, m);
+    std::vector<GdrManifoldPoint> base = points(s, c.closed_form(c.start, c.end));
+    const double h = 0.02;
+    const V3 moves[5] = {{0, 0, 0}, {h, 0, 0}, {-h, 0, 0}, {0, 0, h}, {0, 0, -h}};
+    std::vector<GdrManifoldWalk> walks;
+    for (const V3& d : moves) walks.push_back(make_walk(s, add(c.start, d), c.start, c.end, base, c.flags));
+    auto r = solver.solve(walks);
+    for (size_t i = 0; i < r.size(); ++i) ASSERT_EQ(r[i].status, 0) << c.name << " walk " << i;
+    const size_t last = base.size() - 1;
+    auto omega = [&](int i) { return unit(sub(position(s.scene, r[i].v[last]), c.end)); };
+    V3 du = mul(sub(omega(1), omega(2)), 0.5 / h), dv = mul(sub(omega(3), omega(4)), 0.5 / h);
+    double fd = norm(cross(du, dv));
+    EXPECT_NEAR(r[0].g_walk_at_end / fd, 1.0, 0.01)
+        << c.name << ": g_walk_at_end " << r[0].g_walk_at_end << ", finite differences " << fd;
   }
 }
 
