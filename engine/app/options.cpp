@@ -175,7 +175,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         "shift mapping: hybrid (default; gmlt: manifold) | replay | manifold (hybrid, with manifold walks across specular chains "
         "between rough vertices; not gpm)")
       ->check(CLI::IsMember({"hybrid", "replay", "manifold"}));
-  param("--manifold-iterations", "manifold_iterations", "Newton iterations per manifold walk (default 20)")
+  param("--manifold-iterations", "manifold_iterations", "Newton iterations per manifold walk (default 20; gpm's and gvcm's photon walks 5)")
       ->check(CLI::Range(1, 1000));
   param("--manifold-tolerance", "manifold_tolerance",
         "distance at which a manifold walk has converged, over the scene's bounding radius (default 1e-4)")

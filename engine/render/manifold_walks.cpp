@@ -15,9 +15,9 @@ static_assert(sizeof(GdrManifoldParams) == 16, "GdrManifoldParams layout changed
 
 const std::vector<std::string> kManifoldParams = {"manifold_iterations", "manifold_tolerance", "manifold_precision"};
 
-ManifoldSettings manifold_settings(const IntegratorParams& params) {
+ManifoldSettings manifold_settings(const IntegratorParams& params, int default_iterations) {
   ManifoldSettings s;
-  float iterations = params.non_negative("manifold_iterations", float(s.max_iterations));
+  float iterations = params.non_negative("manifold_iterations", float(default_iterations));
   if (!(iterations >= 1.0f) || iterations != float(int(iterations)) || iterations > 1000.0f) {
     throw Error("integrator parameter manifold_iterations: must be a whole number in [1, 1000]");
   }

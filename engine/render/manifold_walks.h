@@ -32,7 +32,8 @@ struct ManifoldSettings {
   float reverse_factor = 100.0f;
 };
 extern const std::vector<std::string> kManifoldParams;
-ManifoldSettings manifold_settings(const IntegratorParams& params);
+// `default_iterations`: where manifold_iterations is not given.
+ManifoldSettings manifold_settings(const IntegratorParams& params, int default_iterations = 20);
 
 // Whether the solve runs in double on `device` (throws DeviceError for "double" on a device
 // without cl_khr_fp64).

@@ -136,9 +136,10 @@ RunsOfGradients runs_of_gradients(GradientPathTracer& integrator, int spp, int r
 // vary more than twice as much, and the runs' mean gradients are as close to the reference's
 // differences. The gradients do not show a flux error of the offsets (a factor on both directions'
 // offsets cancels), so the primal is checked too, over the pixels whose gradients vary less: the
-// runs' mean against pm's (same seeds and passes, the same photons and camera samples). Measured:
-// 2533 of the 6144 values under half the variance, 100 over twice; mean error 0.0175 against
-// 0.0178; primal 0.9997 of pm's, and 1.0040 with the offsets' flux 30% too high. (The totals of
+// runs' mean against pm's (same seeds and passes, the same photons and camera samples). Measured
+// (photon walks of 5 iterations): 2476 of the 6144 values under half the variance, 92 over twice;
+// mean error 0.0175 against 0.0178; primal 0.9996 of pm's, and 1.0040 with the offsets' flux 30%
+// too high. (The totals of
 // the variances hardly differ, 9.8 against 9.9 at 16 passes: a few pixels that see the light in
 // the mirror sphere outweigh the rest.)
 TEST(Gpm, ManifoldPhotonShiftCorrelatesCaustics) {

@@ -32,7 +32,7 @@ GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSe
   if (!merging_) return;
   // Photons behind delta vertices are shifted by manifold walks where the camera subpaths' offsets walk.
   const bool walks = gpt_manifold_enabled(in.scene, gpt);
-  shifts_.emplace(in, groups_, walks, gpt.manifold);
+  shifts_.emplace(in, groups_, walks, manifold_settings(params, PhotonShifts::kWalkIterations));
   if (walks) subpaths_.record_delta_points();
 }
 

@@ -13,7 +13,8 @@ GradientPhotonMapping::GradientPhotonMapping(const RenderInputs& in, const GptSe
       photons_(pm_settings(params)),
       subpaths_(in, BIDIR_PM, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, 1),
-      shifts_(in, groups_, gpt_manifold_enabled(in.scene, gpt), gpt.manifold) {
+      shifts_(in, groups_, gpt_manifold_enabled(in.scene, gpt),
+              manifold_settings(params, PhotonShifts::kWalkIterations)) {
   if (gpt_manifold_enabled(in.scene, gpt)) subpaths_.record_delta_points();
 }
 
