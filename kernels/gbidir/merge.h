@@ -49,8 +49,6 @@
 #endif
 #endif
 
-#define GPM_NO_WALK 0xffffffffu
-
 // Whether an offset's merge point is a vertex of its own (the photon is shifted there): G-PM's
 // visible points all are; G-VCM's offsets at a glossy vertex of their own too (a merge ends the
 // camera subpath there, so no half vector is copied beyond it).

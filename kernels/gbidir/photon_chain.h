@@ -21,6 +21,8 @@
 #include "shared/gpt_types.h"
 #include "shift/delta_lobe.h"
 
+#define GPM_NO_WALK 0xffffffffu  // a shift that took no walk
+
 typedef struct PhotonChain {
   int count;                                // m
   GdrManifoldPoint end;                     // b

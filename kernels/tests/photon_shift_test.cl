@@ -6,6 +6,7 @@
 // differences and shifted there and back.
 #include "gbidir/photon_shift.h"
 #if defined(GDR_MANIFOLD)
+#include "gbidir/light_tracing.h"
 #include "gbidir/photon_chain.h"
 #endif
 
@@ -179,12 +180,15 @@ __kernel void photon_chain_test_back(GdrPtParams params, uint count, __global co
   back[k] = photon_chain_walk(&s, &ch2, walks[6 * k + 5].start, walks[6 * k].start, k);
 }
 
-// For each walk slot k, out[8 k ..]: for walks 0 .. 4, (b's direction toward the solved chain,
-// 1 where solved); out[8 k + 5] = (|d w_b / dA(y)| of walk 0 (its g_walk_at_end), the chain's
-// length, 0, 0); out[8 k + 6] = (p(y') / p(y) of the shift to y', p(y) / p(y') of
-// the shift back, 1 where each was evaluated); out[8 k + 7] = (the throughput the shift back gives
-// y, over y's own, per channel; 0).
-__kernel void photon_chain_test_eval(GdrPtParams params, uint count, __global const GdrManifoldWalk* walks,
+// For each walk slot k, out[9 k ..]: for walks 0 .. 4, (b's direction toward the solved chain,
+// 1 where solved); out[9 k + 5] = (|d w_b / dA(y)| of walk 0 (its g_walk_at_end), the chain's
+// length, 0, 0); out[9 k + 6] = (p(y') / p(y) of the shift to y', p(y) / p(y') of
+// the shift back, 1 where each was evaluated); out[9 k + 7] = (the throughput the shift back gives
+// y, over y's own, per channel; 0); out[9 k + 8] = light tracing's walked shift of y (seen by the
+// camera) to y' and back (lt_offset_walked): (R(y -> y') R(y' -> y), the way back's value over
+// y's own light-tracing value times R(y' -> y), 1 where both were formed, 0).
+__kernel void photon_chain_test_eval(GdrPtParams params, GdrBidirOptions opts, __global const GdrCamera* camera,
+                                     uint count, __global const GdrManifoldWalk* walks,
                                      __global const GdrManifoldResult* results,
                                      __global const GdrManifoldResult* back_results,
                                      __global const GdrBidirVertex* store, __global const GdrLightOrigin* origins,
@@ -201,12 +205,12 @@ __kernel void photon_chain_test_eval(GdrPtParams params, uint count, __global co
   for (int i = 0; i < 5; ++i) {
     GdrManifoldResult R = results[6 * k + i];
     float3 w = R.status == 0 ? normalize(manifold_point_on(&s, R.v[m - 1]) - b) : (float3)(0.0f);
-    out[8 * k + i] = (float4)(w, R.status == 0 ? 1.0f : 0.0f);
+    out[9 * k + i] = (float4)(w, R.status == 0 ? 1.0f : 0.0f);
   }
   Surface sy = surface_at(&s, y.prim, y.u, y.v);
   GdrManifoldResult R0 = results[6 * k];
-  out[8 * k + 5] = (float4)(R0.status == 0 ? R0.g_walk_at_end : 0.0f, (float)m, 0.0f, 0.0f);
-  out[8 * k + 6] = out[8 * k + 7] = (float4)(0.0f);
+  out[9 * k + 5] = (float4)(R0.status == 0 ? R0.g_walk_at_end : 0.0f, (float)m, 0.0f, 0.0f);
+  out[9 * k + 6] = out[9 * k + 7] = out[9 * k + 8] = (float4)(0.0f);
   GdrManifoldResult RA = results[6 * k + 5], RB = back_results[k];
   if (RA.status != 0) return;
   GdrManifoldPoint at = walks[6 * k + 5].start;
@@ -222,9 +226,30 @@ __kernel void photon_chain_test_eval(GdrPtParams params, uint count, __global co
     PhotonChainPoints pb = photon_chain_points(&s, &ch2, &RB, &sy2, &sy);
     back = photon_chain_eval(&s, &ch2, &RB, &pb, &sy2, &sy, phi2, &phi_back, &ratio_b, &wi2, &pdfs);
   }
-  out[8 * k + 6] = (float4)(ratio_a, ratio_b, a ? 1.0f : 0.0f, back ? 1.0f : 0.0f);
+  out[9 * k + 6] = (float4)(ratio_a, ratio_b, a ? 1.0f : 0.0f, back ? 1.0f : 0.0f);
   if (back) {
-    out[8 * k + 7] = (float4)(safe_div(phi_back.x, phi.x), safe_div(phi_back.y, phi.y), safe_div(phi_back.z, phi.z), 0.0f);
+    out[9 * k + 7] = (float4)(safe_div(phi_back.x, phi.x), safe_div(phi_back.y, phi.y), safe_div(phi_back.z, phi.z), 0.0f);
   }
+  // Light tracing's shift of y there and back, where the camera sees both points.
+  GdrCamera cam = *camera;
+  CameraProjection pr;
+  if (RB.status != 0 || !camera_project(&cam, sy.p, &pr)) return;
+  GdrBidirVertex yv, yback;
+  float3 v, v2;
+  float r, r2;
+  if (!lt_offset_walked(&s, &cam, &opts, &ch, &RA, &y, &sy, &sy2, &yv, &v, &r)) return;
+  yv.prim = at.prim;
+  yv.u = at.b1;
+  yv.v = at.b2;
+  PhotonChain ch2 = photon_chain_moved(&ch, &RA);
+  if (!lt_offset_walked(&s, &cam, &opts, &ch2, &RB, &yv, &sy2, &sy, &yback, &v2, &r2)) return;
+  // y's own light-tracing value, as bidir_light_shade splats it.
+  Bsdf by = surface_bsdf(&s, &sy);
+  Frame f = frame_from_normal(sy.ns);
+  float scale;
+  float3 fy = camera_connection(&cam, &pr, &by, &f, sy.ng, vload3(0, y.wo), y.dvcm, y.dvc, &opts, 1, &scale);
+  float expect = dot(phi * fy * scale, (float3)(1.0f)) * r2;
+  if (!(expect > 0.0f)) return;
+  out[9 * k + 8] = (float4)(r * r2, dot(v2, (float3)(1.0f)) / expect, 1.0f, 0.0f);
 }
 #endif

@@ -249,11 +249,16 @@ TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
 // fixed for the photon moved by +-h (3e-4 of the scene's radius) along its surface's tangents,
 // gives by central differences the |d w_b / dA(y)| the walk reports (g_walk_at_end); and the
 // shift to a photon y' moved by d (1e-2 of the radius) and back from y' along its solved chain
-// gives densities whose product is 1 and y's own throughput. Walks converge to 1e-5 of the
+// gives densities whose product is 1 and y's own throughput; where the camera sees y, light
+// tracing's walked shift (gbidir/light_tracing.h) there and back gives pdf ratios whose product is
+// 1 and y's own light-tracing value times R(y' -> y) (its sums re-aimed along the chain, vcm's
+// options). Walks converge to 1e-5 of the
 // radius, so the differences are numerical: bounds on medians and 90th percentiles (the
 // tessellated spheres' chains have kinks where a vertex crosses a triangle's edge). Measured: 251
 // chains, density median 6.8e-4, p90 8.9e-3; round trip median 4.2e-5, p90 8.1e-4; throughput
-// median 4.1e-5, p90 6.5e-4. The walk's g_walk (seen from the photon) turned around by the
+// median 4.1e-5, p90 6.5e-4; light tracing (227 pairs) R R' median 4.2e-5, p90 8.1e-4, value
+// median 1.1e-5, p90 1.7e-4 (0.69 with the offset's throughput 30% too high). The walk's g_walk (seen
+// from the photon) turned around by the
 // chain's end cosines instead: density median 1.1e-2, p90 6.2e-2 (1e-3 of the radius).
 TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 32);
@@ -286,16 +291,16 @@ TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
             grid.delta_depths, cl_uint(batch.subpaths.capacity()), back, batch.in.device_scene)
       .run(chains);
   solver.solve(back, chains, back_results, batch.p);
-  Buffer<cl_float4> b_out(batch.in.context, size_t(8) * chains);
+  Buffer<cl_float4> b_out(batch.in.context, size_t(9) * chains);
   kernels.make(program, "photon_chain_test_eval")
-      .args(batch.p, chains, walks, results, back_results, batch.subpaths.store(), batch.subpaths.origins(),
+      .args(batch.p, batch.o, batch.in.device_scene.camera(), chains, walks, results, back_results, batch.subpaths.store(), batch.subpaths.origins(),
             grid.delta_points, grid.delta_depths, cl_uint(batch.subpaths.capacity()), b_out, batch.in.device_scene)
       .run(chains);
   const std::vector<cl_float4> out = b_out.read();
 
-  std::vector<double> density, round_trip, throughput;
+  std::vector<double> density, round_trip, throughput, lt_ratio, lt_value;
   for (cl_uint k = 0; k < chains; ++k) {
-    const cl_float4* o = &out[8 * k];
+    const cl_float4* o = &out[9 * k];
     if (o[0].s[3] + o[1].s[3] + o[2].s[3] + o[3].s[3] + o[4].s[3] == 5.0f) {
       V3 du = mul(sub(v3(o[1]), v3(o[2])), 0.5 / h), dv = mul(sub(v3(o[3]), v3(o[4])), 0.5 / h);
       const double fd = len(cross(du, dv));
@@ -305,6 +310,10 @@ TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
       round_trip.push_back(std::fabs(double(o[6].s[0]) * o[6].s[1] - 1.0));
       for (int c = 0; c < 3; ++c) throughput.push_back(std::fabs(o[7].s[c] - 1.0));
     }
+    if (o[8].s[2] == 1.0f) {
+      lt_ratio.push_back(std::fabs(o[8].s[0] - 1.0));
+      lt_value.push_back(std::fabs(o[8].s[1] - 1.0));
+    }
   }
   auto quantile = [](std::vector<double> v, double q) {
     std::sort(v.begin(), v.end());
@@ -312,6 +321,10 @@ TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
   };
   ASSERT_GT(density.size(), chains / 2) << "walks solved for the finite differences";
   ASSERT_GT(round_trip.size(), chains / 2) << "shifts there and back evaluated";
+  ASSERT_GT(lt_ratio.size(), chains / 4) << "light tracing's shifts there and back formed";
+  std::printf("%u chains: light tracing's %zu: R R' median %.3g, p90 %.3g; value median %.3g, p90 %.3g\n", chains,
+              lt_ratio.size(), quantile(lt_ratio, 0.5), quantile(lt_ratio, 0.9), quantile(lt_value, 0.5),
+              quantile(lt_value, 0.9));
   std::printf("%u chains: density against finite differences median %.3g, p90 %.3g; round trip median %.3g, "
               "p90 %.3g; throughput median %.3g, p90 %.3g\n",
               chains, quantile(density, 0.5), quantile(density, 0.9),
@@ -323,6 +336,10 @@ TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
   EXPECT_LT(quantile(round_trip, 0.9), 1e-2);
   EXPECT_LT(quantile(throughput, 0.5), 1e-3);
   EXPECT_LT(quantile(throughput, 0.9), 1e-2);
+  EXPECT_LT(quantile(lt_ratio, 0.5), 1e-3);
+  EXPECT_LT(quantile(lt_ratio, 0.9), 1e-2);
+  EXPECT_LT(quantile(lt_value, 0.5), 1e-3);
+  EXPECT_LT(quantile(lt_value, 0.9), 1e-2);
 }
 
 // G-BDPT's light-tracing shift (kernels/gbidir/light_tracing.h, lt_offset) between two points the

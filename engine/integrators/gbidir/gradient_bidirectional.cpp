@@ -28,12 +28,12 @@ GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSe
       merging_(merging),
       subpaths_(in, merging ? BIDIR_VCM : BIDIR_BDPT, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()),
-      light_tracing_(in, groups_, subpaths_.capacity()) {
-  if (!merging_) return;
-  // Photons behind delta vertices are shifted by manifold walks where the camera subpaths' offsets walk.
+      light_tracing_(in, groups_, subpaths_.capacity(), gpt_manifold_enabled(in.scene, gpt), gpt.manifold) {
+  // Light-traced vertices and photons behind delta vertices are shifted by manifold walks where
+  // the camera subpaths' offsets walk.
   const bool walks = gpt_manifold_enabled(in.scene, gpt);
-  shifts_.emplace(in, groups_, walks, manifold_settings(params, PhotonShifts::kWalkIterations));
   if (walks) subpaths_.record_delta_points();
+  if (merging_) shifts_.emplace(in, groups_, walks, manifold_settings(params, PhotonShifts::kWalkIterations));
 }
 
 void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
@@ -59,6 +59,7 @@ void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t
   groups_.trace(p, PrimarySamples(), aux(), light ? &subpaths : nullptr, merge);
   groups_.report(in_.context.stats());
   subpaths_.report(in_.context.stats());
+  light_tracing_.report(in_.context.stats());
   if (shifts_) shifts_->report(in_.context.stats());
 }
 

@@ -4,7 +4,8 @@
 
 namespace gdr {
 
-LightTracingShifts::LightTracingShifts(const RenderInputs& in, const GradientGroups& groups, size_t slots)
+LightTracingShifts::LightTracingShifts(const RenderInputs& in, const GradientGroups& groups, size_t slots, bool walks,
+                                       const ManifoldSettings& manifold)
     : in_(in),
       rays_(groups.kernels().make(groups.program(), "gbdpt_lt_offset_rays")),
       eval_(groups.kernels().make(groups.program(), "gbdpt_lt_offset_eval")),
@@ -14,8 +15,18 @@ LightTracingShifts::LightTracingShifts(const RenderInputs& in, const GradientGro
       offset_rays_(in.context, slots * GPT_OFFSETS, ray_queue_flags(in.context)),
       shadow_rays_(in.context, slots * GPT_OFFSETS, ray_queue_flags(in.context)),
       pairs_(in.context, slots * GPT_OFFSETS),
-      layers_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height * GBDPT_LT_LAYERS) {
+      layers_(in.context, size_t(in.scene.camera.width) * in.scene.camera.height * GBDPT_LT_LAYERS),
+      walk_of_(in.context, walks ? slots * GPT_OFFSETS : 1),
+      walks_(in.context, walks ? slots * GPT_OFFSETS : 1),
+      walk_results_(in.context, walks ? slots * GPT_OFFSETS : 1) {
   layers_.fill(Vec4{});
+  if (!walks) return;
+  walk_kernel_.emplace(groups.kernels().make(groups.program(), "gbdpt_lt_offset_walks"));
+  manifold_.emplace(in, groups.kernels(), groups.program(), slots * GPT_OFFSETS, manifold);
+}
+
+void LightTracingShifts::report(Stats* stats) {
+  if (manifold_) manifold_->report(stats);
 }
 
 void LightTracingShifts::shift(const GdrGptParams& p, const GdrBidirOptions& o, cl_uint count,
@@ -24,18 +35,32 @@ void LightTracingShifts::shift(const GdrGptParams& p, const GdrBidirOptions& o, 
   ScopedTimer timer(in_.context.stats(), "render/light_tracing_shifts");
   const Buffer<GdrCamera>& camera = in_.device_scene.camera();
   DeviceCounters& counters = groups.counters();
+  const cl_uint stride = cl_uint(subpaths.capacity());
+  const PhotonGrid g = subpaths.grid();
   counters.reset();
   rays_
-      .args(p, count, cl_uint(subpaths.capacity()), camera, splats.slots(), subpaths.seen(), subpaths.light_paths(),
-            subpaths.store(), subpaths.origins(), pairs_, offset_rays_, counters.buffer(), in_.device_scene)
+      .args(p, count, stride, camera, splats.slots(), subpaths.seen(), subpaths.light_paths(), subpaths.store(),
+            subpaths.origins(), g.delta_points, g.delta_depths, pairs_, offset_rays_, counters.buffer(),
+            in_.device_scene)
       .run(count);
   const cl_uint rays = counters.read()[GPT_COUNTER_LT_OFFSET_RAYS];
   if (rays > 0) {
     intersect(in_.embree, offset_rays_, rays, false, "light_tracing_offset");
+    if (manifold_) {
+      counters.reset();
+      walk_kernel_
+          ->args(p, rays, stride, offset_rays_, subpaths.seen(), subpaths.light_paths(), subpaths.store(),
+                 subpaths.origins(), g.delta_points, g.delta_depths, walk_of_, walks_, counters.buffer(),
+                 in_.device_scene)
+          .run(rays);
+      const cl_uint walks = counters.read()[GPT_COUNTER_MANIFOLD_WALKS];
+      if (walks > 0) manifold_->solve(walks_, walks, walk_results_, p.path);
+    }
     counters.reset();
     eval_
-        .args(p, o, rays, cl_uint(subpaths.capacity()), camera, offset_rays_, subpaths.seen(), subpaths.light_paths(),
-              subpaths.store(), subpaths.origins(), pairs_, shadow_rays_, counters.buffer(), in_.device_scene)
+        .args(p, o, rays, stride, camera, offset_rays_, subpaths.seen(), subpaths.light_paths(), subpaths.store(),
+              subpaths.origins(), g.delta_points, g.delta_depths, walk_of_, walks_, walk_results_, pairs_,
+              shadow_rays_, counters.buffer(), in_.device_scene)
         .run(rays);
     occlude(in_.embree, shadow_rays_, rays, "light_tracing_offset");
     blocked_.args(rays, shadow_rays_, pairs_, counters.buffer()).run(rays);
