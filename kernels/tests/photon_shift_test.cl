@@ -3,7 +3,7 @@
 // the solid angle a small patch subtends, and G-VCM's light-side sums of photons left in place,
 // also (built with the manifold solver's defines and GDR_GVCM) behind delta vertices
 // (gbidir/photon_chain.h), where the manifold photon shift's walks are also checked against finite
-// differences and shifted there and back.
+// differences and shifted there and back, also by light tracing's shift.
 #include "gbidir/photon_shift.h"
 #if defined(GDR_MANIFOLD)
 #include "gbidir/light_tracing.h"

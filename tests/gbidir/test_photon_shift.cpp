@@ -7,7 +7,7 @@
 // shifted photon, recomputed from its parent, are the photon's own where the shift leaves it in
 // place (light subpaths traced by the bidirectional kernels, seed 3), also behind delta vertices
 // (the manifold photon shift's chain left where it is). The manifold photon shift's density
-// against finite differences of its walks, and its shift there and back.
+// against finite differences of its walks, and its shift there and back, also light tracing's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -245,21 +245,22 @@ TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
 }
 
 // G-PM's manifold photon shift (gbidir/photon_chain.h) on the caustics box's photons behind its
-// spheres (light subpaths of seed 3 as above, 32 px): b's direction toward the chain, solved with b
-// fixed for the photon moved by +-h (3e-4 of the scene's radius) along its surface's tangents,
-// gives by central differences the |d w_b / dA(y)| the walk reports (g_walk_at_end); and the
-// shift to a photon y' moved by d (1e-2 of the radius) and back from y' along its solved chain
-// gives densities whose product is 1 and y's own throughput; where the camera sees y, light
-// tracing's walked shift (gbidir/light_tracing.h) there and back gives pdf ratios whose product is
-// 1 and y's own light-tracing value times R(y' -> y) (its sums re-aimed along the chain, vcm's
-// options). Walks converge to 1e-5 of the
-// radius, so the differences are numerical: bounds on medians and 90th percentiles (the
-// tessellated spheres' chains have kinks where a vertex crosses a triangle's edge). Measured: 251
-// chains, density median 6.8e-4, p90 8.9e-3; round trip median 4.2e-5, p90 8.1e-4; throughput
-// median 4.1e-5, p90 6.5e-4; light tracing (227 pairs) R R' median 4.2e-5, p90 8.1e-4, value
-// median 1.1e-5, p90 1.7e-4 (0.69 with the offset's throughput 30% too high). The walk's g_walk (seen
-// from the photon) turned around by the
-// chain's end cosines instead: density median 1.1e-2, p90 6.2e-2 (1e-3 of the radius).
+// spheres (light subpaths of seed 3 as above, 32 px):
+// - b's direction toward the chain, solved with b fixed for the photon moved by +-h (3e-4 of the
+//   scene's radius) along its surface's tangents, gives by central differences the |d w_b / dA(y)|
+//   the walk reports (g_walk_at_end);
+// - the shift to a photon y' moved by d (1e-2 of the radius) and back from y' along its solved
+//   chain gives densities whose product is 1 and y's own throughput;
+// - where the camera sees y, light tracing's walked shift (gbidir/light_tracing.h) there and back
+//   gives pdf ratios whose product is 1 and y's own light-tracing value times R(y' -> y) (its sums
+//   re-aimed along the chain, vcm's options).
+// Walks converge to 1e-5 of the radius, so the differences are numerical: bounds on medians and
+// 90th percentiles (the tessellated spheres' chains have kinks where a vertex crosses a triangle's
+// edge). Measured: 251 chains, density median 6.8e-4, p90 8.9e-3; round trip median 4.2e-5, p90
+// 8.1e-4; throughput median 4.1e-5, p90 6.5e-4; light tracing (227 pairs) R R' median 4.2e-5, p90
+// 8.1e-4, value median 1.1e-5, p90 1.7e-4 (0.69 with the offset's throughput 30% too high). The
+// walk's g_walk (seen from the photon) turned around by the chain's end cosines instead gives the
+// density median 1.1e-2, p90 6.2e-2 (h 1e-3 of the radius).
 TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 32);
   LightBatch batch(scene, BIDIR_VCM, true);
@@ -282,6 +283,9 @@ TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
       .run(batch.entries);
   const cl_uint chains = counter.read()[0];
   ASSERT_GT(chains, 50u);
+  const std::vector<cl_int> ends = kind.read();
+  EXPECT_GT(std::count(ends.begin(), ends.end(), GPM_PARENT_SURFACE), 10) << "chains from a rough light vertex";
+  EXPECT_GT(std::count(ends.begin(), ends.end(), GPM_PARENT_LIGHT), 10) << "chains from the light";
   ManifoldWalks solver(batch.in, kernels, program, size_t(6) * chains, ms);
   Buffer<GdrManifoldResult> results(batch.in.context, size_t(6) * chains), back_results(batch.in.context, chains);
   solver.solve(walks, 6 * chains, results, batch.p);
