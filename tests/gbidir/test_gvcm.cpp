@@ -111,9 +111,10 @@ TEST(Gvcm, PrimalAgreesWithVcmUnderManifoldShift) {
 // Merges and connections are counted; the caustics box's photons from the glass sphere (a delta
 // parent) fail their shift, counted, and leave the base the pair's weight, unless the manifold
 // photon shift walks them (each solved walk's reverse ray counted in rays/photon_reverse); light
-// tracing's vertices behind a delta vertex stay unshifted, counted as photon_parent failures too.
-// Measured (24 px, 2 passes, seed 7): the caustics box's photon_parent failures fall from 740 to
-// 177 under the manifold shift.
+// tracing's vertices behind a delta vertex likewise stay unshifted, counted as photon_parent
+// failures too, unless walked. Measured (24 px, 2 passes, seed 7): the caustics box's
+// photon_parent failures fall from 740 to 0 under the manifold shift (177 while light tracing's
+// vertices were not walked).
 TEST(Gvcm, MergesConnectionsAndFailuresAreCounted) {
   struct Case {
     const char* file;
@@ -132,7 +133,7 @@ TEST(Gvcm, MergesConnectionsAndFailuresAreCounted) {
         ->render_gradients(consistency_settings(2, 7));
     EXPECT_GT(stats.count("gpm/merges"), 0u) << file;
     EXPECT_GT(stats.count("gbdpt/connections"), 0u) << file;
-    EXPECT_EQ(stats.count("shift_failures/photon_parent") > 0, delta_parents) << file;
+    if (!walks) EXPECT_EQ(stats.count("shift_failures/photon_parent") > 0, delta_parents) << file;
     EXPECT_EQ(stats.count("rays/photon_reverse") > 0, walks) << file << " " << c.shift;
     EXPECT_EQ(stats.count("samples/nonfinite_rejected"), 0u) << file;
     if (delta_parents) orphans[c.shift] = stats.count("shift_failures/photon_parent");
