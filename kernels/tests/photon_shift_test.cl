@@ -70,6 +70,15 @@ __kernel void photon_shift_sums_unshifted(GdrPtParams params, GdrBidirOptions op
 }
 
 #if defined(GDR_MANIFOLD)
+// Whether photon y (store entry e) has a delta parent and the chain behind it (*ch).
+inline int photon_behind_chain(const SceneData* s, __global const GdrBidirVertex* store,
+                               __global const GdrLightOrigin* origins, __global const GdrManifoldPoint* delta_points,
+                               uint delta_depths, uint stride, uint e, const GdrBidirVertex* y, PhotonChain* ch) {
+  int reason;
+  return photon_parent(s, store, origins, stride, e, y).kind == GPM_PARENT_NONE &&
+         photon_chain(s, store, origins, delta_points, delta_depths, stride, e, y, ch, &reason);
+}
+
 // G-VCM's sums of a photon whose parent is a delta vertex, its chain left where it is
 // (photon_chain_sums with the walk's result the base chain itself and the offset photon the
 // base's): for each store entry e as above, out[2 e] = (the photon's dvcm, the recomputed dvcm, its
@@ -86,12 +95,8 @@ __kernel void photon_chain_sums_unmoved(GdrPtParams params, GdrBidirOptions opts
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   GdrBidirVertex y = store[e];
   PhotonChain ch;
-  int reason;
   kind[e] = GPM_PARENT_NONE;
-  if (photon_parent(&s, store, origins, stride, e, &y).kind != GPM_PARENT_NONE ||
-      !photon_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch, &reason)) {
-    return;
-  }
+  if (!photon_behind_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch)) return;
   GdrManifoldResult R;
   R.g_walk = R.g_origin = R.g_walk_at_end = R.g_origin_at_end = 1.0f;
   for (int i = 0; i < ch.count; ++i) R.v[ch.count - 1 - i] = ch.v[i];
@@ -123,12 +128,8 @@ __kernel void photon_chain_test_walks(GdrPtParams params, uint entries, uint str
   SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   GdrBidirVertex y = store[e];
   PhotonChain ch;
-  int reason;
   kind[e] = GPM_PARENT_NONE;
-  if (photon_parent(&s, store, origins, stride, e, &y).kind != GPM_PARENT_NONE ||
-      !photon_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch, &reason)) {
-    return;
-  }
+  if (!photon_behind_chain(&s, store, origins, delta_points, delta_depths, stride, e, &y, &ch)) return;
   kind[e] = ch.parent.kind;
   Surface sy = surface_at(&s, y.prim, y.u, y.v);
   Frame f = frame_from_normal(sy.ng);

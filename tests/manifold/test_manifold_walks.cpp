@@ -43,6 +43,13 @@ std::vector<Case> cases() {
 
 class ManifoldWalkTest : public ::testing::TestWithParam<std::string> {};
 
+// The solid angle per unit area a direction sweeps, by central differences: omega(1), omega(2)
+// with the moved point at +-h along one axis, omega(3), omega(4) along the other.
+double swept_solid_angle(const std::function<V3(int)>& omega, double h) {
+  V3 du = mul(sub(omega(1), omega(2)), 0.5 / h), dv = mul(sub(omega(3), omega(4)), 0.5 / h);
+  return norm(cross(du, dv));
+}
+
 ManifoldSettings settings_for(const std::string& precision) {
   ManifoldSettings m;
   m.precision = precision;
@@ -101,9 +108,8 @@ TEST_P(ManifoldWalkTest, GeometryTermMatchesFiniteDifferences) {
     for (const V3& d : moves) walks.push_back(make_walk(s, c.start, c.start, add(c.end, d), base, c.flags));
     auto r = solver.solve(walks);
     for (size_t i = 0; i < r.size(); ++i) ASSERT_EQ(r[i].status, 0) << c.name << " walk " << i;
-    auto omega = [&](int i) { return unit(sub(position(s.scene, r[i].v[0]), position(s.scene, walks[i].start))); };
-    V3 du = mul(sub(omega(1), omega(2)), 0.5 / h), dv = mul(sub(omega(3), omega(4)), 0.5 / h);
-    double fd = norm(cross(du, dv));
+    double fd = swept_solid_angle(
+        [&](int i) { return unit(sub(position(s.scene, r[i].v[0]), position(s.scene, walks[i].start))); }, h);
     EXPECT_NEAR(r[0].g_walk / fd, 1.0, 0.01) << c.name << ": g_walk " << r[0].g_walk << ", finite differences " << fd;
   }
 }
@@ -125,9 +131,7 @@ TEST_P(ManifoldWalkTest, EndGeometryTermMatchesFiniteDifferences) {
     auto r = solver.solve(walks);
     for (size_t i = 0; i < r.size(); ++i) ASSERT_EQ(r[i].status, 0) << c.name << " walk " << i;
     const size_t last = base.size() - 1;
-    auto omega = [&](int i) { return unit(sub(position(s.scene, r[i].v[last]), c.end)); };
-    V3 du = mul(sub(omega(1), omega(2)), 0.5 / h), dv = mul(sub(omega(3), omega(4)), 0.5 / h);
-    double fd = norm(cross(du, dv));
+    double fd = swept_solid_angle([&](int i) { return unit(sub(position(s.scene, r[i].v[last]), c.end)); }, h);
     EXPECT_NEAR(r[0].g_walk_at_end / fd, 1.0, 0.01)
         << c.name << ": g_walk_at_end " << r[0].g_walk_at_end << ", finite differences " << fd;
   }
