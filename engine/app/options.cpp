@@ -186,6 +186,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   param("--shift-threshold", "shift_threshold",
         "roughness at or below which a vertex counts as glossy/specular (not reconnected; default 0.001)")
       ->check(kFiniteNonNegative);
+  param("--primal", "primal",
+        "the primal image: pairs (default: each pixel the mean of its four pairs' estimates, as G-PT's) | "
+        "power (bdpt's estimate of the base paths alone under the power heuristic, as Manzi et al.'s)")
+      ->check(CLI::IsMember({"pairs", "power"}));
   param("--recon", "recon",
         "Poisson reconstruction: weighted (default: L2 with each term weighted by the inverse of its "
         "per-pixel variance estimate) | l1 | l2 | none")

@@ -55,6 +55,8 @@ inline GdrBidirVertex bidir_vertex(const GdrHit* hit, float3 wo, float3 beta, co
   v.dvcm = st->dvcm;
   v.dvc = st->dvc;
   v.dvm = st->dvm;
+  v.power_dvcm = st->power_dvcm;
+  v.power_dvc = st->power_dvc;
   v.depth = depth;
   return v;
 }
@@ -236,6 +238,12 @@ __attribute__((always_inline)) inline void bidir_light_shade_one(
     float3 c = beta * f * scale;
     if (max3(c) > 0.0f && finite_or_count(c, nonfinite)) {
       splat_write(&splats[slot], pr.raster, c);
+      if (opts.power_sums) {  // G-BDPT's primal: the weight under the power heuristic over c's
+        GdrBidirOptions po = mis_power_options();
+        splats[slot].primal =
+            camera_connection_weight(&cam, &pr, &b, &frame, su.ng, wo, st.power_dvcm, st.power_dvc, &po) /
+            camera_connection_weight(&cam, &pr, &b, &frame, su.ng, wo, st.dvcm, st.dvc, &opts);
+      }
       seen[slot] = bidir_vertex(&rh.hit, wo, beta, &st, k);
       atomic_inc(&stats[BIDIR_COUNTER_CAMERA_CONNECTIONS]);
       out->shadow = 1u;

@@ -7,8 +7,16 @@
 #include "bsdf/transport.h"
 #include "camera/importance.h"
 
-// Vertex (geometric normal ng, BSDF b, frame f, direction wo toward its subpath, MIS sums dvcm and
-// dvc) seen as pr: returns the BSDF toward the camera with its cosine and shading-normal
+// Light tracing's MIS weight over every strategy for a vertex (geometric normal ng, BSDF b, frame
+// f, direction wo toward its subpath, MIS sums dvcm and dvc) seen as pr.
+inline float camera_connection_weight(const GdrCamera* cam, const CameraProjection* pr, const Bsdf* b,
+                                      const Frame* f, float3 ng, float3 wo, float dvcm, float dvc,
+                                      const GdrBidirOptions* o) {
+  float3 wo_l = frame_to_local(f, wo), wc_l = frame_to_local(f, -pr->dir);
+  return mis_weight(mis_side(camera_pdf_area(cam, pr, ng), dvcm, dvc, bsdf_pdf(b, wc_l, wo_l), o));
+}
+
+// That vertex's connection: returns the BSDF toward the camera with its cosine and shading-normal
 // correction; *scale: the factor that makes it the connection's value per unit of the subpath's
 // throughput, the camera's importance with light tracing's weight (1 where `weighted` is 0: light
 // tracing is the only strategy).
@@ -18,10 +26,7 @@ inline float3 camera_connection(const GdrCamera* cam, const CameraProjection* pr
   float3 wc = -pr->dir, wo_l = frame_to_local(f, wo), wc_l = frame_to_local(f, wc);
   float3 fc = bsdf_eval_transport(b, wo_l, wc_l, TRANSPORT_IMPORTANCE) *
               shading_normal_correction(wo, wc, ng, wo_l.z, wc_l.z);
-  float w = 1.0f;
-  if (weighted) {
-    w = bidir_weight(o, mis_weight(mis_side(camera_pdf_area(cam, pr, ng), dvcm, dvc, bsdf_pdf(b, wc_l, wo_l), o)));
-  }
+  float w = weighted ? bidir_weight(o, camera_connection_weight(cam, pr, b, f, ng, wo, dvcm, dvc, o)) : 1.0f;
   *scale = w * pr->cos_theta * camera_we(cam, pr->cos_theta) / (pr->dist * pr->dist);
   return fc;
 }

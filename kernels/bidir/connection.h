@@ -36,6 +36,7 @@ typedef struct BidirConnection {
   // side's pdfs.
   float3 f_z, f_y, light_throughput;
   float dist2, w_light, camera_pdf_area, camera_pdf_rev;
+  float light_pdf_area, light_pdf_rev;  // the light side's pdfs (as the camera side's: mis_side)
 } BidirConnection;
 
 // Returns 0 where the two points coincide (no connection at all).
@@ -68,7 +69,9 @@ inline int bidir_connection_ends(const ConnectionEnd* ez, const GdrBidirVertex* 
   // Each side's vertex as the other side's BSDF would have drawn it (area pdfs).
   float pdf_z_fwd = bsdf_pdf(&ez->b, wo_z_local, dir_z_local), pdf_z_rev = bsdf_pdf(&ez->b, dir_z_local, wo_z_local);
   float pdf_y_fwd = bsdf_pdf(&ey->b, wo_y_local, dir_y_local), pdf_y_rev = bsdf_pdf(&ey->b, dir_y_local, wo_y_local);
-  out->w_light = mis_side(pdf_z_fwd * fabs(dot(ey->s.ng, dir)) / dist2, y->dvcm, y->dvc, pdf_y_rev, o);
+  out->light_pdf_area = pdf_z_fwd * fabs(dot(ey->s.ng, dir)) / dist2;
+  out->light_pdf_rev = pdf_y_rev;
+  out->w_light = mis_side(out->light_pdf_area, y->dvcm, y->dvc, pdf_y_rev, o);
   out->camera_pdf_area = pdf_y_fwd * fabs(dot(ez->s.ng, dir)) / dist2;
   out->camera_pdf_rev = pdf_z_rev;
   out->others = out->w_light + mis_side(out->camera_pdf_area, z->dvcm, z->dvc, pdf_z_rev, o);

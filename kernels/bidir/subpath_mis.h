@@ -26,17 +26,33 @@
 #include "path/mis.h"
 #include "shared/bidir_types.h"
 
+// bdpt's options under the power heuristic: those of the power_* sums (G-BDPT's primal).
+inline GdrBidirOptions mis_power_options(void) {
+  GdrBidirOptions o;
+  o.technique = BIDIR_BDPT;
+  o.mis = BIDIR_MIS_POWER;
+  o.strategy_s = o.strategy_t = -1;
+  o.radius = o.vm_normalization = o.vm_factor = o.vc_factor = 0.0f;
+  o.multiplex = o.power_sums = 0;
+  return o;
+}
+
+// The sums dvcm and dvc of a light subpath leaving the light of emission sample e.
+inline void mis_light_start_sums(const SceneData* s, const EmissionSample* e, int mis, float* dvcm, float* dvc) {
+  float emission = e->pmf * e->pdf_pos * e->pdf_dir;
+  float cos_light = light_is_infinite(s, e->light) ? 1.0f : fabs(dot(e->n, e->dir));
+  *dvcm = mis_power_of(emission_direct_pdf(s, e) / emission, mis);
+  *dvc = (e->delta_pos || e->delta_dir) ? 0.0f : mis_power_of(cos_light / emission, mis);
+}
+
 // A light subpath leaves the light of emission sample e.
 inline void mis_light_start(const SceneData* s, const EmissionSample* e, const GdrBidirOptions* o,
                             GdrBidirPathState* st) {
-  int mis = o->mis;
-  float emission = e->pmf * e->pdf_pos * e->pdf_dir;
-  int infinite = light_is_infinite(s, e->light);
-  st->dvcm = mis_power_of(emission_direct_pdf(s, e) / emission, mis);
-  float cos_light = infinite ? 1.0f : fabs(dot(e->n, e->dir));
-  st->dvc = (e->delta_pos || e->delta_dir) ? 0.0f : mis_power_of(cos_light / emission, mis);
+  mis_light_start_sums(s, e, o->mis, &st->dvcm, &st->dvc);
   st->dvm = st->dvc * o->vc_factor;
-  st->flags = infinite ? BIDIR_PATH_INFINITE : 0;
+  st->power_dvcm = st->power_dvc = 0.0f;
+  if (o->power_sums) mis_light_start_sums(s, e, BIDIR_MIS_POWER, &st->power_dvcm, &st->power_dvc);
+  st->flags = (light_is_infinite(s, e->light) ? BIDIR_PATH_INFINITE : 0) | (o->power_sums ? BIDIR_PATH_POWER_SUMS : 0);
 }
 
 // A camera subpath's dvcm as it leaves the camera along a direction at cos_theta to the view axis
@@ -51,6 +67,7 @@ inline void mis_camera_start(const GdrCamera* cam, float cos_theta, int mis, Gdr
   st->dvcm = mis_camera_dvcm(cam, cos_theta, mis);
   st->dvc = 0.0f;
   st->dvm = 0.0f;
+  st->power_dvcm = st->power_dvc = 0.0f;
   st->flags = BIDIR_PATH_ALL_SPECULAR;
 }
 
@@ -70,6 +87,10 @@ inline void mis_sums_arrive(float dist, float cos_in, int has_length, int mis, f
 inline void mis_arrive(float dist, float cos_in, int mis, GdrBidirPathState* st) {
   int no_length = st->depth == 0 && (st->flags & BIDIR_PATH_INFINITE);
   mis_sums_arrive(dist, cos_in, !no_length, mis, &st->dvcm, &st->dvc, &st->dvm);
+  if (st->flags & BIDIR_PATH_POWER_SUMS) {
+    float unused = 0.0f;
+    mis_sums_arrive(dist, cos_in, !no_length, BIDIR_MIS_POWER, &st->power_dvcm, &st->power_dvc, &unused);
+  }
 }
 
 // The sums scattered in a direction of pdf `pdf` (delta: a delta lobe), leaving at cos_out to the
@@ -97,6 +118,11 @@ inline void mis_scatter(const BsdfSample* bs, float pdf_rev, float cos_out, cons
                         GdrBidirPathState* st) {
   if (!bs->delta) st->flags &= ~BIDIR_PATH_ALL_SPECULAR;
   mis_sums_scatter(bs->delta, bs->pdf, pdf_rev, cos_out, o, &st->dvcm, &st->dvc, &st->dvm);
+  if (st->flags & BIDIR_PATH_POWER_SUMS) {
+    GdrBidirOptions po = mis_power_options();
+    float unused = 0.0f;
+    mis_sums_scatter(bs->delta, bs->pdf, pdf_rev, cos_out, &po, &st->power_dvcm, &st->power_dvc, &unused);
+  }
 }
 
 // What the sums say of the strategies on one side of a connection: the pdf with which the other

@@ -35,6 +35,8 @@ inline GdrBidirVertex gbdpt_vertex(uint prim, float u, float v, float3 wo, float
   x.dvcm = m->dvcm;
   x.dvc = m->dvc;
   x.dvm = m->dvm;
+  x.power_dvcm = m->power_dvcm;
+  x.power_dvc = m->power_dvc;
   x.depth = depth;
   return x;
 }

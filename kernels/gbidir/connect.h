@@ -47,6 +47,11 @@ __attribute__((always_inline)) inline void gbdpt_connect_group(
 
   for (int i = 0; i < GPT_PEND_COUNT; ++i) pend[g * GPT_PEND_COUNT + i] = (float4)(0.0f);
   int base_ray_needed = 0, glossy = 0;
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  float3 cp = checked(gbdpt_primal_connection(&cx, &y, &rec.base) * cx.value, nonfinite);
+  pend[g * GPT_PEND_COUNT + GPT_PEND_PRIMAL] = (float4)(cp, 0.0f);
+  base_ray_needed = max3(cp) > 0.0f;
+#endif
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     int state = rec.state[k], formed = 0;
     BidirConnection cy;

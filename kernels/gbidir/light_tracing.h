@@ -300,6 +300,14 @@ __kernel void gbdpt_lt_offset_blocked(uint count, __global const GdrRay* shadow_
   }
 }
 
+// A splat's share of the primal into pixel px's layers, where G-BDPT's primal is its own
+// (gbidir/weights.h; the splat's value times its `primal`, and the pixel's filter).
+inline void lt_add_own_primal(__global float4* px, float3 c) {
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  px[GPT_ACC_PRIMAL] += (float4)(c, 0.0f);
+#endif
+}
+
 // Whether pixel p of an axis of `size` pixels samples its filter's whole support (filter_range).
 inline int lt_axis_uncut(const GdrCamera* cam, int p, int size) {
   float2 range = filter_range(cam, p, size);
@@ -328,13 +336,16 @@ __kernel void gbdpt_lt_gather(__global const GdrCamera* camera, __global const u
       camera_pixel_footprint(&cam, raster, &lo, &hi);
       if (y < lo.y || y > hi.y) continue;
       float wy = camera_axis_weight_full(&cam, y, h, raster.y, full);
-      float3 c = vload3(0, splats[i].value);
+      float3 c = vload3(0, splats[i].value), cp = c * splats[i].primal;
       float4 pr[GPT_OFFSETS];
       for (int k = 0; k < GPT_OFFSETS; ++k) pr[k] = pairs[i * GPT_OFFSETS + k];
       if (pr[0].w == GBDPT_LT_UNSHIFTED) {
         for (int x = lo.x; x <= hi.x; ++x) {
           float hb = wy * camera_axis_weight_full(&cam, x, w, raster.x, full);
-          if (hb > 0.0f) layers[(uint)(y * w + x) * GBDPT_LT_LAYERS + GPT_ACC_DIRECT] += (float4)(c * hb, 0.0f);
+          if (!(hb > 0.0f)) continue;
+          __global float4* px = &layers[(uint)(y * w + x) * GBDPT_LT_LAYERS];
+          px[GPT_ACC_DIRECT] += (float4)(c * hb, 0.0f);
+          lt_add_own_primal(px, cp * hb);
         }
         continue;
       }
@@ -350,6 +361,7 @@ __kernel void gbdpt_lt_gather(__global const GdrCamera* camera, __global const u
       for (int x = lo.x; x <= hi.x; ++x) {
         float wx = camera_axis_weight_full(&cam, x, w, raster.x, full), hb = wy * wx;
         __global float4* px = &layers[(uint)(y * w + x) * GBDPT_LT_LAYERS];
+        if (hb > 0.0f) lt_add_own_primal(px, cp * hb);
         for (int k = 0; k < GPT_OFFSETS; ++k) {
           int dx = OFFSET_PIXEL_DX(k), nx = x + dx, ny = y + OFFSET_PIXEL_DY(k);
           if (nx < 0 || ny < 0 || nx >= w || ny >= h) {

@@ -15,6 +15,13 @@
 // (gbdpt_shifted_share). For every path the weights of its base events, its offset events and its
 // light tracing then sum to 1.
 //
+// G-BDPT's primal is the pairs' mean, as G-PT's, unless --primal power (GDR_GBDPT_POWER_PRIMAL)
+// makes it bdpt's estimate of the base paths alone, weighed by the power heuristic over every
+// strategy as Manzi et al.'s reference code does (the balance heuristic for the gradients only),
+// from the power_* sums of both subpaths: w = 1 / (1 + others under the power heuristic). That
+// primal holds the emission seen directly too, and light tracing's share of each path (the splat's
+// `primal` weight).
+//
 // G-VCM (Sun et al. 2017) weighs the same way over VCM's strategies: the sums carry merging's
 // factors (the pass's, in GdrGptParams), and a merge's share of base and offset comes from the
 // same heuristic (gbidir/merge.h).
@@ -34,8 +41,7 @@ inline GdrBidirOptions gbdpt_options(const GdrGptParams* p) {
   o.radius = o.vm_normalization = 0.0f;
   o.vm_factor = p->vm_factor;
   o.vc_factor = p->vc_factor;
-  o.multiplex = 0;
-  o.pad0 = 0;
+  o.multiplex = o.power_sums = 0;
   return o;
 }
 
@@ -86,8 +92,11 @@ inline float gbdpt_connection_all_others(const BidirConnection* c, float all_dvc
 // The sums of a camera subpath leaving the camera along a direction at cos_theta to its axis.
 inline GbdptSums gbdpt_sums_start(const GdrCamera* cam, float cos_theta) {
   GbdptSums m;
-  m.dvcm = m.dvc = m.dvm = m.all_dvc = m.all_dvm = 0.0f;
+  m.dvcm = m.dvc = m.dvm = m.all_dvc = m.all_dvm = m.power_dvcm = m.power_dvc = 0.0f;
   m.all_dvcm = mis_camera_dvcm(cam, cos_theta, BIDIR_MIS_BALANCE);
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  m.power_dvcm = mis_camera_dvcm(cam, cos_theta, BIDIR_MIS_POWER);
+#endif
   return m;
 }
 
@@ -96,9 +105,37 @@ inline GbdptSums gbdpt_sums_start(const GdrCamera* cam, float cos_theta) {
 inline void gbdpt_sums_arrive(float dist, float cos_in, GbdptSums* m) {
   mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->dvcm, &m->dvc, &m->dvm);
   mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->all_dvcm, &m->all_dvc, &m->all_dvm);
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  float unused = 0.0f;
+  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_POWER, &m->power_dvcm, &m->power_dvc, &unused);
+#endif
 }
 inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, const GdrBidirOptions* o,
                                GbdptSums* m) {
   mis_sums_scatter(delta, pdf, pdf_rev, cos_out, o, &m->dvcm, &m->dvc, &m->dvm);
   mis_sums_scatter(delta, pdf, pdf_rev, cos_out, o, &m->all_dvcm, &m->all_dvc, &m->all_dvm);
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  GdrBidirOptions po = mis_power_options();
+  float unused = 0.0f;
+  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &po, &m->power_dvcm, &m->power_dvc, &unused);
+#endif
+}
+
+// The primal's weights of the strategies a camera subpath with sums m evaluates itself (as
+// gbdpt_*_others above), and of a connection c between light vertex y and camera vertex z.
+inline float gbdpt_primal_surface_emission(const SceneData* s, const Surface* su, float3 wo, const GbdptSums* m) {
+  return mis_weight(mis_surface_emission_others(s, su, wo, m->power_dvcm, m->power_dvc, BIDIR_MIS_POWER));
+}
+inline float gbdpt_primal_escaped_emission(const SceneData* s, float3 dir, const GbdptSums* m) {
+  return mis_weight(mis_escaped_emission_others(s, dir, m->power_dvcm, m->power_dvc, BIDIR_MIS_POWER));
+}
+inline float gbdpt_primal_light_point(const SceneData* s, const Bsdf* b, float3 wo_l, float3 wi_l, float3 ng,
+                                      int light, const LightSample* ls, const GbdptSums* m) {
+  GdrBidirOptions po = mis_power_options();
+  return mis_weight(mis_light_point_others(s, b, wo_l, wi_l, ng, light, ls, m->power_dvcm, m->power_dvc, &po));
+}
+inline float gbdpt_primal_connection(const BidirConnection* c, const GdrBidirVertex* y, const GdrBidirVertex* z) {
+  GdrBidirOptions po = mis_power_options();
+  return mis_weight(mis_side(c->light_pdf_area, y->power_dvcm, y->power_dvc, c->light_pdf_rev, &po) +
+                    mis_side(c->camera_pdf_area, z->power_dvcm, z->power_dvc, c->camera_pdf_rev, &po));
 }

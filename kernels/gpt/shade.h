@@ -50,6 +50,14 @@ inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const Gpt
   acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(c_off, nonfinite));
 }
 
+// Emission the camera sees directly, or the base's share under the primal's weight, into G-BDPT's
+// own primal (nothing elsewhere).
+inline void add_own_primal(__global float4* acc, uint pixel, float3 c) {
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  acc_add(acc, pixel, GPT_ACC_PRIMAL, c);
+#endif
+}
+
 // The pair (base, offset k) of one strategy under G-BDPT's weights w (base, offset): the base's
 // c_base and the offset's c_off (f(y) |J| / p(x)).
 inline void add_pair(__global float4* acc, uint pixel, int k, float2 w, float3 c_base, float3 c_off,
@@ -117,9 +125,13 @@ __attribute__((always_inline)) inline void gpt_shade_group(
       float3 le = environment_eval(&s, dir, &p_env);
       if (direct) {
         acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
+        add_own_primal(acc, st->pixel, checked(beta * le, nonfinite));
       } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
         float2 others_x = GPT_ESCAPED_EMISSION_OTHERS(&s, dir, &base.mis);
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+        add_own_primal(acc, st->pixel, checked(gbdpt_primal_escaped_emission(&s, dir, &base.mis) * beta * le, nonfinite));
+#endif
 #else
         float p_light = last_specular ? 0.0f : p_env;
 #endif
@@ -188,9 +200,13 @@ __attribute__((always_inline)) inline void gpt_shade_group(
     float3 le = su.light >= 0 ? surface_radiance(&s, &su, wo) : (float3)(0.0f);
     if (direct) {
       acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
+      add_own_primal(acc, st->pixel, checked(beta * le, nonfinite));
     } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
       float2 others_x = GPT_SURFACE_EMISSION_OTHERS(&s, &su, wo, &base.mis);
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+      add_own_primal(acc, st->pixel, checked(gbdpt_primal_surface_emission(&s, &su, wo, &base.mis) * beta * le, nonfinite));
+#endif
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         int alive = offset_alive(&o[k]);
         float3 c_off = (float3)(0.0f);
@@ -245,6 +261,11 @@ __attribute__((always_inline)) inline void gpt_shade_group(
     float p_light = ls.pdf, p_b = ls.delta ? 0.0f : bsdf_pdf(&b, wo_l, wi_l);
 #endif
     int base_ray_needed = 0, own_rays = 0;
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+    float3 cp = checked(gbdpt_primal_light_point(&s, &b, wo_l, wi_l, su.ng, light, &ls, &base.mis) * c_base, nonfinite);
+    pend[g * GPT_PEND_COUNT + GPT_PEND_PRIMAL] = (float4)(cp, 0.0f);
+    base_ray_needed = max3(cp) > 0.0f;
+#endif
     int own_ray_of[GPT_OFFSETS];  // offset k's own shadow ray toward lights[k]
     LightSample lights[GPT_OFFSETS];
     for (int k = 0; k < GPT_OFFSETS; ++k) {
@@ -427,6 +448,7 @@ __kernel void gpt_shadow(uint count, __global const GdrRay* shadow_rays, __globa
       acc_add(acc, pixel, GPT_ACC_BASE(k), pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)].xyz);
       acc_add(acc, pixel, GPT_ACC_OFFSET(k), pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)].xyz);
     }
+    acc_add(acc, pixel, GPT_ACC_PRIMAL, pend[g * GPT_PEND_COUNT + GPT_PEND_PRIMAL].xyz);
   } else {
     int k = (int)kind - 1;
     acc_add(acc, pixel, GPT_ACC_OFFSET(k), pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)].xyz);

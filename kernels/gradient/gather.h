@@ -5,7 +5,7 @@
 #include "path/film.h"
 
 // One pass's sums into the film: the primal (each pixel the mean of its four pairwise
-// estimates), the forward-difference gradients, and directly seen emission; for the primal and
+// estimates, or G-BDPT's own: gbidir/weights.h), the forward-difference gradients, and directly seen emission; for the primal and
 // both gradients also the sums of squared deviations (film_add_moments) from which the host
 // estimates their per-pixel variance. The film layers are those of the pass's half
 // (render/gradient_film.h); `passes` counts the passes they hold, this one included.
@@ -27,7 +27,11 @@ __kernel void gpt_gather(int width, int height, __global const float4* acc, int 
     }
   }
   float3 d = acc[p * GPT_ACC_COUNT + GPT_ACC_DIRECT].xyz;
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+  float3 value = acc[p * GPT_ACC_COUNT + GPT_ACC_PRIMAL].xyz;
+#else
   float3 value = 0.25f * pairs + d;
+#endif
   float3 gx = (float3)(0.0f), gy = (float3)(0.0f);
   if (x + 1 < width) {
     uint n = p + 1u;

@@ -33,7 +33,8 @@ inline void gmlt_record(__global GdrSplat* records, uint chains, uint c, int r, 
   s.raster[1] = raster.y;
   vstore3(valid ? value : (float3)(0.0f), 0, s.value);
   s.valid = valid && (value.x != 0.0f || value.y != 0.0f || value.z != 0.0f);
-  s.pad0 = s.pad1 = 0;
+  s.primal = 1.0f;
+  s.pad0 = 0;
   records[(size_t)r * chains + c] = s;
 }
 

@@ -50,7 +50,8 @@ __kernel void mlt_contribution(__global const GdrCamera* camera, GdrPtParams par
   out.raster[1] = raster.y;
   vstore3(valid ? value / y : (float3)(0.0f), 0, out.value);
   out.valid = valid;
-  out.pad0 = out.pad1 = 0;
+  out.primal = 1.0f;
+  out.pad0 = 0;
   contributions[c] = out;
   f[c] = valid ? y : 0.0f;
   values[c] = (float4)(0.0f);

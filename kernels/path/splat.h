@@ -13,6 +13,7 @@ inline void splat_write(__global GdrSplat* s, float2 raster, float3 value) {
   s->raster[1] = raster.y;
   vstore3(value, 0, s->value);
   s->valid = 1;
+  s->primal = 1.0f;
 }
 
 inline void splat_drop(__global GdrSplat* s) { s->valid = 0; }

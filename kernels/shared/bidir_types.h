@@ -23,7 +23,7 @@ typedef struct GdrBidirOptions {
   float vm_factor;         // MIS weight factor of merging against connections (0 without merging)
   float vc_factor;         // of connections against merging (0 without connections)
   int multiplex;           // 1: each path picks its length and one strategy from its numbers (bidir/strategies.h)
-  int pad0;
+  int power_sums;          // 1: light subpaths also carry bdpt's sums under the power heuristic (G-BDPT's primal)
 } GdrBidirOptions;
 
 // bdpt_connect's vertex index that stands for the path's own (multiplexed) strategy's vertex.
@@ -31,14 +31,18 @@ typedef struct GdrBidirOptions {
 
 #define BIDIR_PATH_INFINITE 2  // a light subpath from a light at infinity (its first segment has no length)
 #define BIDIR_PATH_ALL_SPECULAR 4  // a camera subpath with delta scatterings only so far (pm's emission)
+#define BIDIR_PATH_POWER_SUMS 8  // the subpath carries power_dvcm and power_dvc (GdrBidirOptions.power_sums)
 
 // A camera or light subpath between bounces. dvcm and dvc are the running MIS sums of SmallVCM
 // (Georgiev et al. 2012, "Implementing Vertex Connection and Merging"): with them a vertex knows
 // the weights of every strategy that could have sampled its subpath without walking it again.
+// power_dvcm and power_dvc are bdpt's sums again under the power heuristic, where a primal is
+// weighed by it apart from the sums of the options' heuristic (G-BDPT's; 0 elsewhere).
 typedef struct GdrBidirPathState {
   float throughput[3];
   float rr_scale;        // largest component of the first throughput (Russian roulette's unit)
   float dvcm, dvc, dvm;
+  float power_dvcm, power_dvc;
   unsigned int index;    // camera: the pixel; light: the subpath's index in its pass
   unsigned int sample;   // the pass
   int depth;             // scattering vertices so far (0: leaving the light or the camera)
@@ -55,6 +59,7 @@ typedef struct GdrBidirVertex {
   float wo[3];
   float throughput[3];
   float dvcm, dvc, dvm;
+  float power_dvcm, power_dvc;  // GdrBidirPathState's
   int depth;  // scattering vertices up to and including this one
 } GdrBidirVertex;
 

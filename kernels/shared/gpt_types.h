@@ -33,19 +33,23 @@ typedef struct GdrGptParams {
 } GdrGptParams;
 
 // Accumulators per group (float4 each): contributions of the base to the pair with neighbour k,
-// contributions of offset k, and emission seen directly from the camera (kept out of gradients).
+// contributions of offset k, emission seen directly from the camera (kept out of gradients), and
+// G-BDPT's own primal under --primal power (GDR_GBDPT_POWER_PRIMAL: gbidir/weights.h; unused
+// elsewhere, where the primal is the pairs' mean).
 #define GPT_ACC_BASE(k) (k)
 #define GPT_ACC_OFFSET(k) (4 + (k))
 #define GPT_ACC_DIRECT 8
-#define GPT_ACC_COUNT 9
+#define GPT_ACC_PRIMAL 9
+#define GPT_ACC_COUNT 10
 
 // Next-event contributions waiting for their shadow rays (float4 each, per group): the base's
-// share for pair k and joined offset k's (both behind the base's shadow ray), and traced offset
-// k's (behind its own shadow ray).
+// share for pair k and joined offset k's (both behind the base's shadow ray), traced offset k's
+// (behind its own shadow ray), and the base's primal (GPT_ACC_PRIMAL's, behind the base's ray).
 #define GPT_PEND_BASE(k) (k)
 #define GPT_PEND_JOINED(k) (4 + (k))
 #define GPT_PEND_OWN(k) (8 + (k))
-#define GPT_PEND_COUNT 12
+#define GPT_PEND_PRIMAL 12
+#define GPT_PEND_COUNT 13
 
 // Shadow-ray ids: group * 8 + kind, kind 0 = the base's ray, 1 + k = offset k's own ray.
 #define GPT_SHADOW_ID(group, kind) ((group) * 8u + (uint)(kind))

@@ -11,10 +11,13 @@
 
 // G-BDPT's and G-VCM's running MIS sums of a camera subpath (bidir/subpath_mis.h), twice: without
 // light tracing's share (the strategies whose gradients are shifted, weighed among themselves),
-// and with it (every strategy; gbidir/weights.h). dvm stays 0 where nothing merges.
+// and with it (every strategy; gbidir/weights.h). dvm stays 0 where nothing merges. power_dvcm
+// and power_dvc are bdpt's sums over every strategy under the power heuristic, for G-BDPT's
+// primal under --primal power (0 elsewhere).
 typedef struct GbdptSums {
   float dvcm, dvc, dvm;
   float all_dvcm, all_dvc, all_dvm;
+  float power_dvcm, power_dvc;
 } GbdptSums;
 
 // What an offset path is doing.

@@ -6,5 +6,6 @@ typedef struct GdrSplat {
   float raster[2];  // film position in pixels from the top-left corner
   float value[3];   // what it adds, times each pixel's normalized filter there
   int valid;        // 0: the slot holds nothing (no contribution, or its shadow ray was blocked)
-  int pad0, pad1;   // 32 bytes: clEnqueueFillBuffer's pattern must be a power of two in size
+  float primal;     // G-BDPT's light tracing: its primal's weight over value's own (gbidir/light_tracing.h)
+  int pad0;         // 32 bytes: clEnqueueFillBuffer's pattern must be a power of two in size
 } GdrSplat;

@@ -4,8 +4,8 @@
 
 // The kernels see these layouts too (4-byte scalars only: the same on both sides).
 static_assert(sizeof(GdrBidirOptions) == 40, "GdrBidirOptions layout changed");
-static_assert(sizeof(GdrBidirPathState) == 56, "GdrBidirPathState layout changed");
-static_assert(sizeof(GdrBidirVertex) == 52, "GdrBidirVertex layout changed");
+static_assert(sizeof(GdrBidirPathState) == 64, "GdrBidirPathState layout changed");
+static_assert(sizeof(GdrBidirVertex) == 60, "GdrBidirVertex layout changed");
 static_assert(sizeof(GdrLightOrigin) == 32, "GdrLightOrigin layout changed");
 
 namespace gdr {

@@ -2,18 +2,22 @@
 
 namespace gdr {
 
-GdrBidirOptions gbdpt_light_options() {
-  GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
+GdrBidirOptions gbdpt_light_options(bool power_sums) {
+  GdrBidirOptions o{BIDIR_BDPT, BIDIR_MIS_BALANCE, -1, -1, 0.0f, 0.0f, 0.0f, 0.0f, 0, power_sums ? 1 : 0};
   return o;
 }
 
 const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
-                                               "manifold_tolerance", "manifold_precision"};
+                                               "manifold_tolerance", "manifold_precision", "primal"};
 const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
                                               "manifold_tolerance", "manifold_precision", "radius",
                                               "radius_alpha"};
 
-GptSettings gbdpt_settings(const IntegratorParams& params) { return gpt_settings(params); }
+GptSettings gbdpt_settings(const IntegratorParams& params) {
+  GptSettings s = gpt_settings(params);
+  s.power_primal = params.choice("primal", "pairs", {"pairs", "power"}) == "power";
+  return s;
+}
 GptSettings gvcm_settings(const IntegratorParams& params) { return gpt_settings(params); }
 
 BidirSettings gvcm_photon_settings(const IntegratorParams& params) {
@@ -26,6 +30,7 @@ GradientBidirectional::GradientBidirectional(const RenderInputs& in, const GptSe
                                              const IntegratorParams& params, std::optional<BidirSettings> merging)
     : GradientPathTracer(in, gpt, params, merging ? GroupKind::kConnectingMerging : GroupKind::kConnecting),
       merging_(merging),
+      light_options_(gbdpt_light_options(gpt.power_primal)),
       subpaths_(in, merging ? BIDIR_VCM : BIDIR_BDPT, groups_.capacity()),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()),
       light_tracing_(in, groups_, subpaths_.capacity(), gpt_manifold_enabled(in.scene, gpt), gpt.manifold) {
@@ -41,7 +46,7 @@ void GradientBidirectional::trace_chunk(const RenderSettings& settings, uint32_t
   GdrGptParams p = groups_.params(settings, sample, first, count);
   p.path.max_depth = bdpt_segments(settings.max_depth);
   const GdrBidirOptions o =
-      merging_ ? merging_pass_options(*merging_, in_.scene, sample, count) : gbdpt_light_options();
+      merging_ ? merging_pass_options(*merging_, in_.scene, sample, count) : light_options_;
   // The camera subpaths' sums take the light subpaths' merging factors (kernels/gbidir/weights.h).
   p.vm_factor = o.vm_factor;
   p.vc_factor = o.vc_factor;

@@ -54,8 +54,9 @@ GptSettings gvcm_settings(const IntegratorParams& params);
 // gvcm's light subpaths and radius schedule: vcm's, under the balance heuristic.
 BidirSettings gvcm_photon_settings(const IntegratorParams& params);
 // gbdpt's light subpaths: bdpt's store and connections to the camera, the balance heuristic (the
-// options the kernels weigh the camera subpaths by: kernels/gbidir/weights.h, gbdpt_options).
-GdrBidirOptions gbdpt_light_options();
+// options the kernels weigh the camera subpaths by: kernels/gbidir/weights.h, gbdpt_options), and
+// with `power_sums` the power heuristic's sums too (--primal power).
+GdrBidirOptions gbdpt_light_options(bool power_sums = false);
 
 class GradientBidirectional : public GradientPathTracer {
  public:
@@ -70,6 +71,7 @@ class GradientBidirectional : public GradientPathTracer {
   void end_pass() override;
 
   std::optional<BidirSettings> merging_;
+  const GdrBidirOptions light_options_;  // gbdpt's (gvcm's are the pass's)
   BidirSubpaths subpaths_;  // the light subpaths, one a group
   SplatFilm splats_;        // their connections to the camera (t = 1)
   LightTracingShifts light_tracing_;  // and those shifted to the neighbour pixels

@@ -23,6 +23,7 @@ Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, GroupKind ki
   Defines d = gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
   if (connects(kind)) d["GDR_GBDPT"] = "1";
   if (kind == GroupKind::kConnectingMerging) d["GDR_GVCM"] = "1";
+  if (kind == GroupKind::kConnecting && gpt.power_primal) d["GDR_GBDPT_POWER_PRIMAL"] = "1";
   if (kind == GroupKind::kMerging) d["GDR_GPM"] = "1";
   return d;
 }

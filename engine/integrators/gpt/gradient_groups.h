@@ -30,6 +30,7 @@ struct GptSettings {
   int shift = GPT_SHIFT_HYBRID;  // GPT_SHIFT_*
   float shift_threshold = GDR_GLOSSY_THRESHOLD;
   bool aux = false;
+  bool power_primal = false;  // G-BDPT: the primal under the power heuristic (kernels/gbidir/weights.h)
   ManifoldSettings manifold;
 };
 // The shift's parameters (shift, shift_threshold, manifold_*), with `shift` defaulting to
