@@ -51,7 +51,7 @@ inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const Gpt
 }
 
 // Emission the camera sees directly, or the base's share under the primal's weight, into G-BDPT's
-// own primal (nothing elsewhere).
+// own primal (nothing, the weight unused and not computed, elsewhere).
 inline void add_own_primal(__global float4* acc, uint pixel, float3 c) {
 #if defined(GDR_GBDPT_POWER_PRIMAL)
   acc_add(acc, pixel, GPT_ACC_PRIMAL, c);
@@ -129,9 +129,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
       } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
         float2 others_x = GPT_ESCAPED_EMISSION_OTHERS(&s, dir, &base.mis);
-#if defined(GDR_GBDPT_POWER_PRIMAL)
         add_own_primal(acc, st->pixel, checked(gbdpt_primal_escaped_emission(&s, dir, &base.mis) * beta * le, nonfinite));
-#endif
 #else
         float p_light = last_specular ? 0.0f : p_env;
 #endif
@@ -204,9 +202,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
     } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
       float2 others_x = GPT_SURFACE_EMISSION_OTHERS(&s, &su, wo, &base.mis);
-#if defined(GDR_GBDPT_POWER_PRIMAL)
       add_own_primal(acc, st->pixel, checked(gbdpt_primal_surface_emission(&s, &su, wo, &base.mis) * beta * le, nonfinite));
-#endif
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         int alive = offset_alive(&o[k]);
         float3 c_off = (float3)(0.0f);
