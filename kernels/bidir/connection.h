@@ -39,6 +39,14 @@ typedef struct BidirConnection {
   float light_pdf_area, light_pdf_rev;  // the light side's pdfs (as the camera side's: mis_side)
 } BidirConnection;
 
+// What each side's sums (dvcm, dvc, under o's heuristic) say of connection c's other strategies.
+inline float bidir_connection_light_side(const BidirConnection* c, float dvcm, float dvc, const GdrBidirOptions* o) {
+  return mis_side(c->light_pdf_area, dvcm, dvc, c->light_pdf_rev, o);
+}
+inline float bidir_connection_camera_side(const BidirConnection* c, float dvcm, float dvc, const GdrBidirOptions* o) {
+  return mis_side(c->camera_pdf_area, dvcm, dvc, c->camera_pdf_rev, o);
+}
+
 // Returns 0 where the two points coincide (no connection at all).
 inline int bidir_connection_ends(const ConnectionEnd* ez, const GdrBidirVertex* z, const ConnectionEnd* ey,
                                  const GdrBidirVertex* y, const GdrBidirOptions* o, BidirConnection* out) {
@@ -71,10 +79,10 @@ inline int bidir_connection_ends(const ConnectionEnd* ez, const GdrBidirVertex* 
   float pdf_y_fwd = bsdf_pdf(&ey->b, wo_y_local, dir_y_local), pdf_y_rev = bsdf_pdf(&ey->b, dir_y_local, wo_y_local);
   out->light_pdf_area = pdf_z_fwd * fabs(dot(ey->s.ng, dir)) / dist2;
   out->light_pdf_rev = pdf_y_rev;
-  out->w_light = mis_side(out->light_pdf_area, y->dvcm, y->dvc, pdf_y_rev, o);
   out->camera_pdf_area = pdf_y_fwd * fabs(dot(ez->s.ng, dir)) / dist2;
   out->camera_pdf_rev = pdf_z_rev;
-  out->others = out->w_light + mis_side(out->camera_pdf_area, z->dvcm, z->dvc, pdf_z_rev, o);
+  out->w_light = bidir_connection_light_side(out, y->dvcm, y->dvc, o);
+  out->others = out->w_light + bidir_connection_camera_side(out, z->dvcm, z->dvc, o);
   out->from = ez->s.p;
   out->from_ng = ez->s.ng;
   out->to = leaving_origin(ey->s.p, ey->s.ng, -dir);
@@ -93,6 +101,6 @@ inline BidirConnection bidir_connection_rejoined(const BidirConnection* c, const
                                                  const GdrBidirOptions* o) {
   BidirConnection r = *c;
   r.value = vload3(0, z->throughput) * c->f_z * c->f_y * c->light_throughput / c->dist2;
-  r.others = c->w_light + mis_side(c->camera_pdf_area, z->dvcm, z->dvc, c->camera_pdf_rev, o);
+  r.others = c->w_light + bidir_connection_camera_side(c, z->dvcm, z->dvc, o);
   return r;
 }

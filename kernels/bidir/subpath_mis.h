@@ -82,17 +82,6 @@ inline void mis_sums_arrive(float dist, float cos_in, int has_length, int mis, f
   *dvm /= c;
 }
 
-// The subpath reached its next vertex at distance dist, arriving at cos_in to the geometric
-// normal (a light subpath's first segment from a light at infinity has no length).
-inline void mis_arrive(float dist, float cos_in, int mis, GdrBidirPathState* st) {
-  int no_length = st->depth == 0 && (st->flags & BIDIR_PATH_INFINITE);
-  mis_sums_arrive(dist, cos_in, !no_length, mis, &st->dvcm, &st->dvc, &st->dvm);
-  if (st->flags & BIDIR_PATH_POWER_SUMS) {
-    float unused = 0.0f;
-    mis_sums_arrive(dist, cos_in, !no_length, BIDIR_MIS_POWER, &st->power_dvcm, &st->power_dvc, &unused);
-  }
-}
-
 // The sums scattered in a direction of pdf `pdf` (delta: a delta lobe), leaving at cos_out to the
 // geometric normal; pdf_rev: the BSDF's pdf of the way back (the sampled direction to the incoming
 // one). A delta lobe cannot be connected to: the sums skip the vertex (its forward and reverse
@@ -112,6 +101,28 @@ inline void mis_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out,
   *dvcm = mis_power_of(1.0f / pdf, mis);
 }
 
+// bdpt's sums under the power heuristic (power_dvcm, power_dvc: no merging, so no dvm) arrive and
+// scatter as above.
+inline void mis_power_sums_arrive(float dist, float cos_in, int has_length, float* dvcm, float* dvc) {
+  float unused = 0.0f;
+  mis_sums_arrive(dist, cos_in, has_length, BIDIR_MIS_POWER, dvcm, dvc, &unused);
+}
+inline void mis_power_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, float* dvcm, float* dvc) {
+  GdrBidirOptions po = mis_power_options();
+  float unused = 0.0f;
+  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &po, dvcm, dvc, &unused);
+}
+
+// The subpath reached its next vertex at distance dist, arriving at cos_in to the geometric
+// normal (a light subpath's first segment from a light at infinity has no length).
+inline void mis_arrive(float dist, float cos_in, int mis, GdrBidirPathState* st) {
+  int no_length = st->depth == 0 && (st->flags & BIDIR_PATH_INFINITE);
+  mis_sums_arrive(dist, cos_in, !no_length, mis, &st->dvcm, &st->dvc, &st->dvm);
+  if (st->flags & BIDIR_PATH_POWER_SUMS) {
+    mis_power_sums_arrive(dist, cos_in, !no_length, &st->power_dvcm, &st->power_dvc);
+  }
+}
+
 // The subpath scattered by BSDF sample bs, leaving at cos_out to the geometric normal; pdf_rev:
 // the BSDF's pdf of the way back.
 inline void mis_scatter(const BsdfSample* bs, float pdf_rev, float cos_out, const GdrBidirOptions* o,
@@ -119,9 +130,7 @@ inline void mis_scatter(const BsdfSample* bs, float pdf_rev, float cos_out, cons
   if (!bs->delta) st->flags &= ~BIDIR_PATH_ALL_SPECULAR;
   mis_sums_scatter(bs->delta, bs->pdf, pdf_rev, cos_out, o, &st->dvcm, &st->dvc, &st->dvm);
   if (st->flags & BIDIR_PATH_POWER_SUMS) {
-    GdrBidirOptions po = mis_power_options();
-    float unused = 0.0f;
-    mis_sums_scatter(bs->delta, bs->pdf, pdf_rev, cos_out, &po, &st->power_dvcm, &st->power_dvc, &unused);
+    mis_power_sums_scatter(bs->delta, bs->pdf, pdf_rev, cos_out, &st->power_dvcm, &st->power_dvc);
   }
 }
 

@@ -86,7 +86,7 @@ inline float2 gbdpt_light_point_others(const SceneData* s, const Bsdf* b, float3
 // The "others" of connection c with light tracing's share, from the camera vertex's sums with it.
 inline float gbdpt_connection_all_others(const BidirConnection* c, float all_dvcm, float all_dvc,
                                          const GdrBidirOptions* o) {
-  return c->w_light + mis_side(c->camera_pdf_area, all_dvcm, all_dvc, c->camera_pdf_rev, o);
+  return c->w_light + bidir_connection_camera_side(c, all_dvcm, all_dvc, o);
 }
 
 // The sums of a camera subpath leaving the camera along a direction at cos_theta to its axis.
@@ -106,8 +106,7 @@ inline void gbdpt_sums_arrive(float dist, float cos_in, GbdptSums* m) {
   mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->dvcm, &m->dvc, &m->dvm);
   mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_BALANCE, &m->all_dvcm, &m->all_dvc, &m->all_dvm);
 #if defined(GDR_GBDPT_POWER_PRIMAL)
-  float unused = 0.0f;
-  mis_sums_arrive(dist, cos_in, 1, BIDIR_MIS_POWER, &m->power_dvcm, &m->power_dvc, &unused);
+  mis_power_sums_arrive(dist, cos_in, 1, &m->power_dvcm, &m->power_dvc);
 #endif
 }
 inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_out, const GdrBidirOptions* o,
@@ -115,9 +114,7 @@ inline void gbdpt_sums_scatter(int delta, float pdf, float pdf_rev, float cos_ou
   mis_sums_scatter(delta, pdf, pdf_rev, cos_out, o, &m->dvcm, &m->dvc, &m->dvm);
   mis_sums_scatter(delta, pdf, pdf_rev, cos_out, o, &m->all_dvcm, &m->all_dvc, &m->all_dvm);
 #if defined(GDR_GBDPT_POWER_PRIMAL)
-  GdrBidirOptions po = mis_power_options();
-  float unused = 0.0f;
-  mis_sums_scatter(delta, pdf, pdf_rev, cos_out, &po, &m->power_dvcm, &m->power_dvc, &unused);
+  mis_power_sums_scatter(delta, pdf, pdf_rev, cos_out, &m->power_dvcm, &m->power_dvc);
 #endif
 }
 
@@ -136,6 +133,6 @@ inline float gbdpt_primal_light_point(const SceneData* s, const Bsdf* b, float3 
 }
 inline float gbdpt_primal_connection(const BidirConnection* c, const GdrBidirVertex* y, const GdrBidirVertex* z) {
   GdrBidirOptions po = mis_power_options();
-  return mis_weight(mis_side(c->light_pdf_area, y->power_dvcm, y->power_dvc, c->light_pdf_rev, &po) +
-                    mis_side(c->camera_pdf_area, z->power_dvcm, z->power_dvc, c->camera_pdf_rev, &po));
+  return mis_weight(bidir_connection_light_side(c, y->power_dvcm, y->power_dvc, &po) +
+                    bidir_connection_camera_side(c, z->power_dvcm, z->power_dvc, &po));
 }

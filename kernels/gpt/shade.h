@@ -50,11 +50,12 @@ inline void add_bsdf_emission(__global float4* acc, uint pixel, int k, const Gpt
   acc_add(acc, pixel, GPT_ACC_OFFSET(k), checked(c_off, nonfinite));
 }
 
-// Emission the camera sees directly, or the base's share under the primal's weight, into G-BDPT's
-// own primal (nothing, the weight unused and not computed, elsewhere).
-inline void add_own_primal(__global float4* acc, uint pixel, float3 c) {
+// Emission the camera sees directly (w = 1), or the base's share c under the primal's weight w,
+// into G-BDPT's own primal. Elsewhere nothing: no check (the direct layer's add counts a
+// non-finite value once), and the weight, unused, is not computed.
+inline void add_own_primal(__global float4* acc, uint pixel, float w, float3 c, __global uint* nonfinite) {
 #if defined(GDR_GBDPT_POWER_PRIMAL)
-  acc_add(acc, pixel, GPT_ACC_PRIMAL, c);
+  acc_add(acc, pixel, GPT_ACC_PRIMAL, checked(w * c, nonfinite));
 #endif
 }
 
@@ -124,12 +125,13 @@ __attribute__((always_inline)) inline void gpt_shade_group(
       float p_env;
       float3 le = environment_eval(&s, dir, &p_env);
       if (direct) {
-        acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
-        add_own_primal(acc, st->pixel, checked(beta * le, nonfinite));
+        float3 c = checked(beta * le, nonfinite);
+        acc_add(acc, st->pixel, GPT_ACC_DIRECT, c);
+        add_own_primal(acc, st->pixel, 1.0f, c, nonfinite);
       } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
         float2 others_x = GPT_ESCAPED_EMISSION_OTHERS(&s, dir, &base.mis);
-        add_own_primal(acc, st->pixel, checked(gbdpt_primal_escaped_emission(&s, dir, &base.mis) * beta * le, nonfinite));
+        add_own_primal(acc, st->pixel, gbdpt_primal_escaped_emission(&s, dir, &base.mis), beta * le, nonfinite);
 #else
         float p_light = last_specular ? 0.0f : p_env;
 #endif
@@ -197,12 +199,13 @@ __attribute__((always_inline)) inline void gpt_shade_group(
   if (su.light >= 0 || !direct) {
     float3 le = su.light >= 0 ? surface_radiance(&s, &su, wo) : (float3)(0.0f);
     if (direct) {
-      acc_add(acc, st->pixel, GPT_ACC_DIRECT, checked(beta * le, nonfinite));
-      add_own_primal(acc, st->pixel, checked(beta * le, nonfinite));
+      float3 c = checked(beta * le, nonfinite);
+      acc_add(acc, st->pixel, GPT_ACC_DIRECT, c);
+      add_own_primal(acc, st->pixel, 1.0f, c, nonfinite);
     } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
       float2 others_x = GPT_SURFACE_EMISSION_OTHERS(&s, &su, wo, &base.mis);
-      add_own_primal(acc, st->pixel, checked(gbdpt_primal_surface_emission(&s, &su, wo, &base.mis) * beta * le, nonfinite));
+      add_own_primal(acc, st->pixel, gbdpt_primal_surface_emission(&s, &su, wo, &base.mis), beta * le, nonfinite);
       for (int k = 0; k < GPT_OFFSETS; ++k) {
         int alive = offset_alive(&o[k]);
         float3 c_off = (float3)(0.0f);

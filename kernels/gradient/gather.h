@@ -4,18 +4,9 @@
 #include "gradient/neighbours.h"
 #include "path/film.h"
 
-// One pass's sums into the film: the primal (each pixel the mean of its four pairwise
-// estimates, or G-BDPT's own: gbidir/weights.h), the forward-difference gradients, and directly seen emission; for the primal and
-// both gradients also the sums of squared deviations (film_add_moments) from which the host
-// estimates their per-pixel variance. The film layers are those of the pass's half
-// (render/gradient_film.h); `passes` counts the passes they hold, this one included.
-__kernel void gpt_gather(int width, int height, __global const float4* acc, int passes,
-                         __global float4* primal, __global float4* dx, __global float4* dy,
-                         __global float4* direct, __global float4* primal_m2, __global float4* dx_m2,
-                         __global float4* dy_m2) {
-  uint p = get_global_id(0);
-  if (p >= (uint)(width * height)) return;
-  int x = (int)(p % (uint)width), y = (int)(p / (uint)width);
+// The sum of pixel p's four pairwise estimates: its base's share of each pair and the offset
+// each neighbour shifted into it.
+inline float3 gather_pairs(int width, int height, __global const float4* acc, uint p, int x, int y) {
   float3 pairs = (float3)(0.0f);
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     pairs += acc[p * GPT_ACC_COUNT + GPT_ACC_BASE(k)].xyz;
@@ -26,11 +17,27 @@ __kernel void gpt_gather(int width, int height, __global const float4* acc, int 
       pairs += acc[n * GPT_ACC_COUNT + GPT_ACC_OFFSET(opposite)].xyz;
     }
   }
+  return pairs;
+}
+
+// One pass's sums into the film: the primal (each pixel the mean of its four pairwise
+// estimates, or G-BDPT's own under --primal power: gbidir/weights.h), the forward-difference
+// gradients, and directly seen emission; for the primal and both gradients also the sums of
+// squared deviations (film_add_moments) from which the host estimates their per-pixel variance.
+// The film layers are those of the pass's half (render/gradient_film.h); `passes` counts the
+// passes they hold, this one included.
+__kernel void gpt_gather(int width, int height, __global const float4* acc, int passes,
+                         __global float4* primal, __global float4* dx, __global float4* dy,
+                         __global float4* direct, __global float4* primal_m2, __global float4* dx_m2,
+                         __global float4* dy_m2) {
+  uint p = get_global_id(0);
+  if (p >= (uint)(width * height)) return;
+  int x = (int)(p % (uint)width), y = (int)(p / (uint)width);
   float3 d = acc[p * GPT_ACC_COUNT + GPT_ACC_DIRECT].xyz;
 #if defined(GDR_GBDPT_POWER_PRIMAL)
   float3 value = acc[p * GPT_ACC_COUNT + GPT_ACC_PRIMAL].xyz;
 #else
-  float3 value = 0.25f * pairs + d;
+  float3 value = 0.25f * gather_pairs(width, height, acc, p, x, y) + d;
 #endif
   float3 gx = (float3)(0.0f), gy = (float3)(0.0f);
   if (x + 1 < width) {
