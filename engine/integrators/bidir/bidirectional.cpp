@@ -117,7 +117,8 @@ Bidirectional::Bidirectional(const RenderInputs& in, const BidirSettings& settin
     : in_(in),
       settings_(settings),
       subpaths_(in, settings.options.technique,
-                chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
+                device_chunk_capacity(kMaxPathsInFlight, in.context.is_cpu() && !merges(),
+                                      settings.in_flight, in.scene.camera.width, in.scene.camera.height)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}),
       splats_(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, subpaths_.capacity()) {
   if (settings_.aux) aux_.emplace(in.context, subpaths_.kernels(), BidirSubpaths::kProgram, film_.pixels());

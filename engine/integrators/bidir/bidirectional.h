@@ -55,6 +55,7 @@ struct BidirSettings {
   bool aux = false;
   float radius = -1.0f;  // pm, vcm: r_0 over the scene's radius; < 0: the default for the film
   float radius_alpha = 0.75f;
+  size_t in_flight = 0;  // subpaths a chunk at most (0: the device's default, device_chunk_capacity)
 };
 extern const std::vector<std::string> kLtParams, kBdptParams, kPmParams, kVcmParams;
 BidirSettings lt_settings(const IntegratorParams& params);

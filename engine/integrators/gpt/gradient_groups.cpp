@@ -43,9 +43,11 @@ bool gpt_manifold_enabled(const Scene& scene, const GptSettings& gpt) {
   return gpt.shift == GPT_SHIFT_MANIFOLD && scene.features.specular_chains();
 }
 
-size_t GradientGroups::chunk_capacity_for(const RenderInputs& in, const GptSettings& gpt) {
-  return chunk_capacity(gpt_manifold_enabled(in.scene, gpt) ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight,
-                        in.scene.camera.width, in.scene.camera.height);
+size_t GradientGroups::chunk_capacity_for(const RenderInputs& in, const GptSettings& gpt, GroupKind kind) {
+  const bool merges = kind == GroupKind::kMerging || kind == GroupKind::kConnectingMerging;
+  return device_chunk_capacity(gpt_manifold_enabled(in.scene, gpt) ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight,
+                               in.context.is_cpu() && !merges, gpt.in_flight, in.scene.camera.width,
+                               in.scene.camera.height);
 }
 
 const char* GradientGroups::program() const {

@@ -32,6 +32,7 @@ struct GptSettings {
   bool aux = false;
   bool power_primal = false;  // G-BDPT: the primal under the power heuristic (kernels/gbidir/weights.h)
   ManifoldSettings manifold;
+  size_t in_flight = 0;  // groups a chunk at most (0: GradientGroups::chunk_capacity_for's)
 };
 // The shift's parameters (shift, shift_threshold, manifold_*), with `shift` defaulting to
 // `default_shift`.
@@ -66,9 +67,10 @@ class GradientGroups {
                  GroupKind kind = GroupKind::kPaths);
   const char* program() const;
 
-  // Groups in flight for a chunk of the scene's film (fewer with the manifold shift: its walks'
-  // state).
-  static size_t chunk_capacity_for(const RenderInputs& inputs, const GptSettings& gpt);
+  // Groups in flight for a chunk of the scene's film: fewer with the manifold shift (its walks'
+  // state) and on a CPU device (device_chunk_capacity), except where the groups merge (the
+  // chunk's photons are its own light subpaths, one a group).
+  static size_t chunk_capacity_for(const RenderInputs& inputs, const GptSettings& gpt, GroupKind kind);
 
   const KernelFactory& kernels() const { return kernels_; }
   size_t capacity() const { return capacity_; }

@@ -21,7 +21,7 @@ GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings
 GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings& gpt, const IntegratorParams& params,
                                        GroupKind kind)
     : in_(in),
-      groups_(in, gpt, GradientGroups::chunk_capacity_for(in, gpt),
+      groups_(in, gpt, GradientGroups::chunk_capacity_for(in, gpt, kind),
               size_t(in.scene.camera.width) * in.scene.camera.height, kind),
       params_(params),
       gather_(groups_.kernels().make(groups_.program(), "gpt_gather")),
