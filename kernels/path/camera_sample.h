@@ -27,6 +27,8 @@ inline float camera_shift_ratio(const GdrCamera* cam, int x, int y, int nx, int 
   float2 bx = filter_range(cam, x, cam->width), by = filter_range(cam, y, cam->height);
   float2 ox = filter_range(cam, nx, cam->width), oy = filter_range(cam, ny, cam->height);
   if (jitter.x < ox.x || jitter.x > ox.y || jitter.y < oy.x || jitter.y > oy.y) return 0.0f;
+  // Away from the edges the two ranges are the same: the ratio is 1 without the filter's cdf.
+  if (bx.x == ox.x && bx.y == ox.y && by.x == oy.x && by.y == oy.y) return 1.0f;
   int f = cam->filter;
   float r = cam->filter_radius;
   return (filter_mass(f, r, bx) / filter_mass(f, r, ox)) * (filter_mass(f, r, by) / filter_mass(f, r, oy));
