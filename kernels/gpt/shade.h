@@ -68,12 +68,13 @@ inline void add_pair(__global float4* acc, uint pixel, int k, float2 w, float3 c
 }
 
 // What a group's shade step appends to the queues: its shadow rays (the offsets' own, then the
-// base's), its record's entry in the connectable list, the base's next ray.
+// base's), its record's entry in the connectable list, the base's next ray and, where an offset
+// is still traced or waits for a manifold walk, the group's entry in the shift step's list.
 typedef struct {
   float3 shadow_p[GPT_OFFSETS + 1], shadow_ng[GPT_OFFSETS + 1], shadow_wi[GPT_OFFSETS + 1];
   float shadow_dist[GPT_OFFSETS + 1];
   uint shadow_id[GPT_OFFSETS + 1];
-  uint shadows, connectable, next;
+  uint shadows, connectable, next, shift;
   float3 next_p, next_ng, next_wi;
 } GptShadeAppend;
 
@@ -397,29 +398,34 @@ __attribute__((always_inline)) inline void gpt_shade_group(
   base.rr_prob = rr;
   bases[g] = base;
   out->next = 1;
+  // Once every offset has joined the base or died (on diffuse scenes from the second vertex on)
+  // the shift step has nothing to do for the group (an offset never goes back to being traced).
+  for (int k = 0; k < GPT_OFFSETS; ++k) out->shift |= o[k].mode == GPT_MODE_TRACE || o[k].mode == GPT_MODE_MANIFOLD;
   out->next_p = su.p;
   out->next_ng = su.ng;
   out->next_wi = wi;
 }
 
 // The shade step of the queue's groups; each work-group appends its rays and records together
-// (group_reserve).
+// (group_reserve). shift_groups lists the base_out entries of the groups the shift step takes.
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
-                        __global GdrRayHit* base_out, __global GdrRay* shadow_rays, __global GptBaseState* bases,
-                        __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,
+                        __global GdrRayHit* base_out, __global uint* shift_groups, __global GdrRay* shadow_rays,
+                        __global GptBaseState* bases, __global GptOffsetState* offsets, __global float4* acc,
+                        __global float4* pend,
                         __global GbdptCameraVertex* records, __global uint* connectable, __global uint* counters,
                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   __local uint scratch[GROUP_RESERVE_SCRATCH];
   uint q = get_global_id(0);
   GptShadeAppend out;
-  out.shadows = out.connectable = out.next = 0u;
+  out.shadows = out.connectable = out.next = out.shift = 0u;
   if (q < count && !path_no_segments(params.path.max_depth)) {
     gpt_shade_group(params, q, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,
                     PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
   }
-  const uint which[3] = {GPT_COUNTER_SHADOW_RAYS, GPT_COUNTER_CONNECTABLE, GPT_COUNTER_BASE_RAYS};
-  uint slot[3] = {out.shadows, out.connectable, out.next};
-  group_reserve(scratch, counters, which, 3, slot);
+  const uint which[4] = {GPT_COUNTER_SHADOW_RAYS, GPT_COUNTER_CONNECTABLE, GPT_COUNTER_BASE_RAYS,
+                         GPT_COUNTER_SHIFT_GROUPS};
+  uint slot[4] = {out.shadows, out.connectable, out.next, out.shift};
+  group_reserve(scratch, counters, which, 4, slot);
   if (out.shadows == 0u && out.connectable == 0u && out.next == 0u) return;
   uint g = base_in[q].ray.id;
   for (uint j = 0; j < out.shadows; ++j) {
@@ -428,6 +434,7 @@ __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHi
   }
   if (out.connectable) connectable[slot[1]] = g;
   if (out.next) spawn_ray(&base_out[slot[2]], out.next_p, out.next_ng, out.next_wi, g);
+  if (out.shift) shift_groups[slot[3]] = slot[2];
 }
 
 // Adds the next-event contributions whose shadow rays Embree found unoccluded.

@@ -114,19 +114,20 @@ __attribute__((always_inline)) inline void gpt_shift_group(GdrGptParams params, 
   }
 }
 
-// The shift step of the queue's groups; each work-group appends its offsets' rays together
-// (group_reserve).
-__kernel void gpt_shift(GdrGptParams params, uint count, __global const GdrRayHit* base_rays,
-                        __global GdrRayHit* offset_rays, __global GdrRay* reconnect_rays,
-                        __global const GptBaseState* bases, __global GptOffsetState* offsets,
+// The shift step of the groups the shade step listed (shift_groups: their entries in base_rays);
+// each work-group appends its offsets' rays together (group_reserve).
+__kernel void gpt_shift(GdrGptParams params, uint count, __global const uint* shift_groups,
+                        __global const GdrRayHit* base_rays, __global GdrRayHit* offset_rays,
+                        __global GdrRay* reconnect_rays, __global const GptBaseState* bases, __global GptOffsetState* offsets,
                         __global GptChain* chains, __global GdrManifoldWalk* walks, __global uint* counters,
                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   __local uint scratch[GROUP_RESERVE_SCRATCH];
-  uint q = get_global_id(0);
+  uint i = get_global_id(0);
+  uint q = i < count ? shift_groups[i] : 0u;
   GptShiftAppend out;
   out.own = out.reconnects = 0u;
   for (int k = 0; k < GPT_OFFSETS; ++k) out.kind[k] = 0;
-  if (q < count) {
+  if (i < count) {
     gpt_shift_group(params, q, base_rays, bases, offsets, chains, walks, counters, &out, PRIMARY_SAMPLE_NAMES,
                     SCENE_DATA_NAMES);
   }

@@ -61,6 +61,7 @@ typedef struct GdrGptParams {
   X(GPT_COUNTER_OFFSET_RAYS, "")                                                                     \
   X(GPT_COUNTER_SHADOW_RAYS, "")                                                                     \
   X(GPT_COUNTER_RECONNECT_RAYS, "")                                                                  \
+  X(GPT_COUNTER_SHIFT_GROUPS, "")                           /* groups with an offset left to shift */ \
   X(GPT_COUNTER_MANIFOLD_WALKS, "")                                                                  \
   X(GPT_COUNTER_NONFINITE, "samples/nonfinite_rejected")                                             \
   X(GPT_COUNTER_SHIFT_RECONNECT, "shifts/reconnection")                                              \

@@ -10,7 +10,7 @@
 
 // The most queues one call reserves in, and the local memory a kernel declares for it:
 // __local uint scratch[GROUP_RESERVE_SCRATCH].
-#define GROUP_RESERVE_MAX 3
+#define GROUP_RESERVE_MAX 4
 #define GROUP_RESERVE_SCRATCH (2 * GROUP_RESERVE_MAX)
 
 // For queues i < n (counters[which[i]] counts the entries written so far), this item wants slots[i]

@@ -72,6 +72,7 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
       shift_(kernels_.make(program(), "gpt_shift")),
       capacity_(capacity),
       base_queues_(in.context, capacity_, false),
+      shift_groups_(in.context, capacity_),
       offset_rays_(in.context, capacity_ * GPT_OFFSETS, ray_queue_flags(in.context)),
       reconnect_rays_(in.context, capacity_ * GPT_OFFSETS, ray_queue_flags(in.context)),
       shadow_rays_(in.context, capacity_ * (GPT_OFFSETS + 1), ray_queue_flags(in.context)),
@@ -159,21 +160,22 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
   for (int cur = 0, depth = 0; active > 0; cur = 1 - cur, ++depth) {
     counters_.reset();
     shade_
-        .args(p, active, base_rays[cur], base_rays[1 - cur], shadow_rays_, bases_, offsets_, acc_, pend_, records_,
-              connectable_, counters_.buffer(), primary, in_.device_scene)
+        .args(p, active, base_rays[cur], base_rays[1 - cur], shift_groups_, shadow_rays_, bases_, offsets_, acc_,
+              pend_, records_, connectable_, counters_.buffer(), primary, in_.device_scene)
         .run(active);
     counters_.read();
     const cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], connectable = counters_[GPT_COUNTER_CONNECTABLE];
+    const cl_uint shifting = counters_[GPT_COUNTER_SHIFT_GROUPS];
     intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
     add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "shadow");
     if (light && connectable > 0) connect(p, depth + 1, connectable, *light);
     if (merge && connectable > 0) merge(connectable);
-    if (next > 0) {
+    if (shifting > 0) {
       counters_.reset();
       shift_
-          .args(p, next, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_, chains_, walks_,
-                counters_.buffer(), primary, in_.device_scene)
-          .run(next);
+          .args(p, shifting, shift_groups_, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_,
+                chains_, walks_, counters_.buffer(), primary, in_.device_scene)
+          .run(shifting);
       counters_.read();
       const cl_uint offset_rays = counters_[GPT_COUNTER_OFFSET_RAYS];
       const cl_uint reconnects = counters_[GPT_COUNTER_RECONNECT_RAYS];

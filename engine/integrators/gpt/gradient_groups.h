@@ -113,6 +113,7 @@ class GradientGroups {
   Kernel generate_, scatter_, shade_, shadow_, shift_;
   size_t capacity_;
   RayQueues base_queues_;
+  Buffer<cl_uint> shift_groups_;  // the next base queue's entries whose groups have offsets to shift
   Buffer<GdrRayHit> offset_rays_;
   Buffer<GdrRay> reconnect_rays_;
   Buffer<GdrRay> shadow_rays_;
