@@ -68,8 +68,8 @@ class GradientGroups {
   const char* program() const;
 
   // Groups in flight for a chunk of the scene's film: fewer with the manifold shift (its walks'
-  // state) and on a CPU device (device_chunk_capacity), except where the groups merge (the
-  // chunk's photons are its own light subpaths, one a group).
+  // state), and on a CPU device (device_chunk_capacity) where there are no walks and the groups
+  // do not merge (the chunk's photons are its own light subpaths, one a group).
   static size_t chunk_capacity_for(const RenderInputs& inputs, const GptSettings& gpt, GroupKind kind);
 
   const KernelFactory& kernels() const { return kernels_; }
