@@ -411,8 +411,8 @@ __attribute__((always_inline)) inline void gpt_shade_group(
 __kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
                         __global GdrRayHit* base_out, __global uint* shift_groups, __global GdrRay* shadow_rays,
                         __global GptBaseState* bases, __global GptOffsetState* offsets, __global float4* acc,
-                        __global float4* pend,
-                        __global GbdptCameraVertex* records, __global uint* connectable, __global uint* counters,
+                        __global float4* pend, __global GbdptCameraVertex* records, __global uint* connectable,
+                        __global uint* counters,
                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   __local uint scratch[GROUP_RESERVE_SCRATCH];
   uint q = get_global_id(0);

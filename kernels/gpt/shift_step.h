@@ -118,8 +118,9 @@ __attribute__((always_inline)) inline void gpt_shift_group(GdrGptParams params, 
 // each work-group appends its offsets' rays together (group_reserve).
 __kernel void gpt_shift(GdrGptParams params, uint count, __global const uint* shift_groups,
                         __global const GdrRayHit* base_rays, __global GdrRayHit* offset_rays,
-                        __global GdrRay* reconnect_rays, __global const GptBaseState* bases, __global GptOffsetState* offsets,
-                        __global GptChain* chains, __global GdrManifoldWalk* walks, __global uint* counters,
+                        __global GdrRay* reconnect_rays, __global const GptBaseState* bases,
+                        __global GptOffsetState* offsets, __global GptChain* chains,
+                        __global GdrManifoldWalk* walks, __global uint* counters,
                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   __local uint scratch[GROUP_RESERVE_SCRATCH];
   uint i = get_global_id(0);
