@@ -454,7 +454,9 @@ __kernel void gpt_shadow(uint count, __global const GdrRay* shadow_rays, __globa
       acc_add(acc, pixel, GPT_ACC_BASE(k), pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)].xyz);
       acc_add(acc, pixel, GPT_ACC_OFFSET(k), pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)].xyz);
     }
-    acc_add(acc, pixel, GPT_ACC_PRIMAL, pend[g * GPT_PEND_COUNT + GPT_PEND_PRIMAL].xyz);
+#if defined(GDR_GBDPT_POWER_PRIMAL)
+    acc_add(acc, pixel, GPT_ACC_PRIMAL, pend[g * GPT_PEND_COUNT + GPT_PEND_PRIMAL].xyz);  // zero elsewhere
+#endif
   } else {
     int k = (int)kind - 1;
     acc_add(acc, pixel, GPT_ACC_OFFSET(k), pend[g * GPT_PEND_COUNT + GPT_PEND_OWN(k)].xyz);

@@ -1,7 +1,7 @@
 // How a render's pixels are split into chunks (paths in flight at once: smaller on a CPU device,
 // device_chunk_capacity) does not change the image of an integrator whose chunks do not share
-// photons: the caustics box (mirror, glass, diffuse) at 160 x 120, 19200 pixels, 2 spp, seed 5,
-// rendered as one chunk and as four (5000 pixels a chunk, the last 4000). gpt's layers are the
+// photons: the caustics box (mirror, glass, diffuse) at 160 x 160, 25600 pixels, 2 spp, seed 5,
+// rendered as one chunk and as six (5000 pixels a chunk, the last 600). gpt's layers are the
 // same bit for bit; bdpt and gbdpt splat light tracing's contributions from every chunk onto
 // the same pixels, which sums them in another order, so their images agree to float rounding
 // (1e-5 of the image's largest value). The default on this (CPU) device splits the film into two chunks.
@@ -15,6 +15,7 @@
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "render/wavefront/chunks.h"
 #include "scene/load_scene.h"
+#include "support/agreement.h"
 #include "support/render.h"
 
 namespace gdr {
@@ -23,10 +24,7 @@ namespace {
 constexpr size_t kChunk = 5000;
 
 Scene chunked_scene() {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml");
-  scene.camera.width = 160;
-  scene.camera.height = 120;
-  return scene;
+  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 160);
 }
 
 RenderSettings settings() {

@@ -18,6 +18,8 @@ constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
 
 // G-BDPT's and G-VCM's groups connect to light subpaths.
 bool connects(GroupKind kind) { return kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging; }
+// G-PM's and G-VCM's merge with the photons of their chunk's light subpaths.
+bool merges(GroupKind kind) { return kind == GroupKind::kMerging || kind == GroupKind::kConnectingMerging; }
 
 Defines gpt_defines(const RenderInputs& in, const GptSettings& gpt, GroupKind kind) {
   Defines d = gpt_manifold_enabled(in.scene, gpt) ? manifold_defines(in.context.device(), gpt.manifold) : Defines{};
@@ -48,9 +50,8 @@ size_t GradientGroups::chunk_capacity_for(const RenderInputs& in, const GptSetti
   // stages took 1.03 of their time with it (caustics box, 256 px), and merging's photons are a
   // chunk's own.
   const bool manifold = gpt_manifold_enabled(in.scene, gpt);
-  const bool merges = kind == GroupKind::kMerging || kind == GroupKind::kConnectingMerging;
   return device_chunk_capacity(manifold ? kMaxManifoldGroupsInFlight : kMaxGroupsInFlight,
-                               in.context.is_cpu() && !manifold && !merges, gpt.in_flight, in.scene.camera.width,
+                               in.context.is_cpu() && !manifold && !merges(kind), gpt.in_flight, in.scene.camera.width,
                                in.scene.camera.height);
 }
 
