@@ -77,13 +77,13 @@ void EmbreeScene::intersect(GdrRayHit* rays, size_t count, bool coherent, const 
   if (stats_) stats_->add_count(std::string("rays/") + kind, count);
 }
 
-void EmbreeScene::occluded(GdrRay* rays, size_t count, const char* kind) {
+void EmbreeScene::occluded(GdrRay* rays, size_t count, bool coherent, const char* kind) {
   if (count == 0) return;
   ScopedTimer timer(stats_, "embree/occluded");
   tbb::parallel_for(tbb::blocked_range<size_t>(0, count, kChunk), [&](const tbb::blocked_range<size_t>& r) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     rtcOccluded1M(scene_, &context, reinterpret_cast<RTCRay*>(rays + r.begin()),
                   static_cast<unsigned>(r.size()), sizeof(GdrRay));
   });

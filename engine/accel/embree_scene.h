@@ -21,11 +21,12 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  // Closest hits of rays[0..count). `coherent` for camera rays (Embree's coherent stream mode).
+  // Closest hits of rays[0..count). `coherent`: neighbouring rays start at neighbouring points
+  // (Embree's coherent stream mode).
   // Time lands in stats under "embree/intersect", the ray count under "rays/<kind>".
   void intersect(GdrRayHit* rays, size_t count, bool coherent, const char* kind);
-  // Occlusion of rays[0..count): blocked rays get tfar = -inf.
-  void occluded(GdrRay* rays, size_t count, const char* kind);
+  // Occlusion of rays[0..count): blocked rays get tfar = -inf. `coherent` as for intersect.
+  void occluded(GdrRay* rays, size_t count, bool coherent, const char* kind);
 
  private:
   RTCDevice device_ = nullptr;

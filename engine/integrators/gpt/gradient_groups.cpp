@@ -109,8 +109,8 @@ GdrGptParams GradientGroups::params(const RenderSettings& settings, uint32_t sam
   return p;
 }
 
-void GradientGroups::intersect_offsets(cl_uint rays, cl_uint reconnects) {
-  intersect(in_.embree, offset_rays_, rays, false, "offset");
+void GradientGroups::intersect_offsets(cl_uint rays, cl_uint reconnects, bool coherent) {
+  intersect(in_.embree, offset_rays_, rays, coherent, "offset");
   occlude(in_.embree, reconnect_rays_, reconnects, "reconnection");
   scatter_.args(rays, offset_rays_, reconnects, reconnect_rays_, offsets_).run(rays + reconnects);
 }
@@ -123,9 +123,9 @@ void GradientGroups::walk_offsets(const GdrGptParams& p, cl_uint walks) {
   counters_.read();
 }
 
-void GradientGroups::add_shadows(cl_uint count, const char* kind) {
+void GradientGroups::add_shadows(cl_uint count, const char* kind, bool coherent) {
   if (count == 0) return;
-  occlude(in_.embree, shadow_rays_, count, kind);
+  occlude(in_.embree, shadow_rays_, count, kind, coherent);
   shadow_.args(count, shadow_rays_, pend_, bases_, acc_).run(count);
 }
 
@@ -142,7 +142,7 @@ void GradientGroups::connect(const GdrGptParams& p, int camera_depth, cl_uint co
                shadow_rays_, pend_, counters_.buffer(), in_.device_scene)
         .run(connectable);
     counters_.read();
-    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "connection");
+    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "connection", false);
   }
 }
 
@@ -159,7 +159,7 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
   counters_.read();
   intersect(in_.embree, base_rays[0], count, true, "camera");
   if (aux) aux->add(p.path, base_rays[0], count, in_.device_scene);
-  intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], 0);
+  intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], 0, true);  // camera rays of the neighbour pixels
 
   cl_uint active = count;
   for (int cur = 0, depth = 0; active > 0; cur = 1 - cur, ++depth) {
@@ -172,7 +172,7 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
     const cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], connectable = counters_[GPT_COUNTER_CONNECTABLE];
     const cl_uint shifting = counters_[GPT_COUNTER_SHIFT_GROUPS];
     intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
-    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "shadow");
+    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "shadow", depth == 0);
     if (light && connectable > 0) connect(p, depth + 1, connectable, *light);
     if (merge && connectable > 0) merge(connectable);
     if (shifting > 0) {
@@ -185,7 +185,7 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
       const cl_uint offset_rays = counters_[GPT_COUNTER_OFFSET_RAYS];
       const cl_uint reconnects = counters_[GPT_COUNTER_RECONNECT_RAYS];
       walk_offsets(p, counters_[GPT_COUNTER_MANIFOLD_WALKS]);
-      intersect_offsets(offset_rays, reconnects);
+      intersect_offsets(offset_rays, reconnects, false);
     }
     active = next;
   }

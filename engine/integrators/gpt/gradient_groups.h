@@ -97,11 +97,11 @@ class GradientGroups {
 
  private:
   // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
-  void intersect_offsets(cl_uint rays, cl_uint reconnects);
+  void intersect_offsets(cl_uint rays, cl_uint reconnects, bool coherent);
   // Solves the walks the shift step queued and joins their offsets to the base.
   void walk_offsets(const GdrGptParams& p, cl_uint walks);
   // The pending values behind the shadow rays written since the last reset, where unoccluded.
-  void add_shadows(cl_uint count, const char* kind);
+  void add_shadows(cl_uint count, const char* kind, bool coherent);
   // The recorded vertices (`connectable` of them, `camera_depth` segments from the camera) to
   // the light subpaths' stored vertices, one launch a vertex index.
   void connect(const GdrGptParams& p, int camera_depth, cl_uint connectable, const GroupLightSubpaths& light);

@@ -95,7 +95,9 @@ const std::vector<cl_uint>& PathTracer::shade(const GdrPtParams& params, int cur
   return batches_[0].counters.read();
 }
 
-void PathTracer::occlude(Batch& b, cl_uint shadows) { gdr::occlude(in_.embree, b.shadow_rays, shadows, "shadow"); }
+void PathTracer::occlude(Batch& b, cl_uint shadows) {
+  gdr::occlude(in_.embree, b.shadow_rays, shadows, "shadow", b.depth == 0);  // from the first hits: coherent
+}
 
 void PathTracer::add_shadows(Batch& b, cl_uint shadows) {
   shadow_.args(shadows, b.shadow_rays, b.shadow_values, film_["radiance"]).run(shadows);

@@ -37,9 +37,9 @@ void intersect(EmbreeScene& embree, Buffer<GdrRayHit>& rays, size_t count, bool 
   on_host(rays, count, [&](GdrRayHit* r) { embree.intersect(r, count, coherent, kind); });
 }
 
-void occlude(EmbreeScene& embree, Buffer<GdrRay>& rays, size_t count, const char* kind) {
+void occlude(EmbreeScene& embree, Buffer<GdrRay>& rays, size_t count, const char* kind, bool coherent) {
   if (count == 0) return;
-  on_host(rays, count, [&](GdrRay* r) { embree.occluded(r, count, kind); });
+  on_host(rays, count, [&](GdrRay* r) { embree.occluded(r, count, coherent, kind); });
 }
 
 }  // namespace gdr

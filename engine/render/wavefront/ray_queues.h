@@ -24,9 +24,11 @@ struct RayQueues {
   Buffer<cl_uint> slots[2];
 };
 
-// Closest hits of the first `count` rays (`coherent`: camera rays) and occlusion of the first
-// `count` segments, on the queue's host mapping or host copy; `kind` names the rays in the stats.
+// Closest hits of the first `count` rays and occlusion of the first `count` segments, on the
+// queue's host mapping or host copy; `kind` names the rays in the stats. `coherent`: rays whose
+// neighbours in the queue start at neighbouring points (camera rays, their neighbour pixels' rays
+// and the first vertices' shadow rays), which Embree traces faster in its coherent mode.
 void intersect(EmbreeScene& embree, Buffer<GdrRayHit>& rays, size_t count, bool coherent, const char* kind);
-void occlude(EmbreeScene& embree, Buffer<GdrRay>& rays, size_t count, const char* kind);
+void occlude(EmbreeScene& embree, Buffer<GdrRay>& rays, size_t count, const char* kind, bool coherent = false);
 
 }  // namespace gdr
