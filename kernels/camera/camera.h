@@ -40,8 +40,15 @@ inline float gaussian_inverse_guess(float r, float target) {
 inline float filter_cdf(int filter, float r, float t) {
   t = clamp(t, -r, r);
   if (filter == FILTER_TENT) return t <= 0.0f ? (t + r) * (t + r) / (2.0f * r) : r - (r - t) * (r - t) / (2.0f * r);
-  // erfc keeps the tails accurate where erf would cancel.
-  if (filter == FILTER_GAUSSIAN) return t <= 0.0f ? gaussian_tail(r, -t) : 2.0f * gaussian_tail(r, 0.0f) - gaussian_tail(r, t);
+  if (filter == FILTER_GAUSSIAN) {
+    // The ends of the support, where every range the image does not cut starts and ends, in
+    // closed form: the tail past the cut is 0 there by construction (no erfc: sampling an uncut
+    // pixel's filter took two of them an axis).
+    if (t == -r) return 0.0f;
+    if (t == r) return 2.0f * gaussian_tail(r, 0.0f);
+    // erfc keeps the tails accurate where erf would cancel.
+    return t <= 0.0f ? gaussian_tail(r, -t) : 2.0f * gaussian_tail(r, 0.0f) - gaussian_tail(r, t);
+  }
   return t + r;
 }
 
