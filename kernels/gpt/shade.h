@@ -12,6 +12,7 @@
 #include "path/continuation.h"
 #include "path/emission.h"
 #include "path/film.h"
+#include "path/material_queues.h"
 #include "path/nee.h"
 #include "path/scene.h"
 #include "path/shadow.h"
@@ -88,8 +89,9 @@ inline void shade_append_shadow(GptShadeAppend* out, float3 p, float3 ng, const 
 }
 
 // Group g's step (the queue's entry q), up to what it appends (*out); its counts go to `stats`.
+// The base's hit is of BSDF type `type` (its material queue's; < 0: any); a miss appends nothing.
 __attribute__((always_inline)) inline void gpt_shade_group(
-    GdrGptParams params, uint q, __global const GdrRayHit* base_in, __global GptBaseState* bases,
+    GdrGptParams params, uint q, int type, __global const GdrRayHit* base_in, __global GptBaseState* bases,
     __global GptOffsetState* offsets, __global float4* acc, __global float4* pend, __global GbdptCameraVertex* records,
     __global uint* stats, GptShadeAppend* out, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
@@ -239,7 +241,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
     return;
   }
 
-  Bsdf b = surface_bsdf(&s, &su);
+  Bsdf b = surface_bsdf_queued(&s, &su, type);
   Frame frame = frame_from_normal(su.ns);
   float3 wo_l = frame_to_local(&frame, wo);
   PathSampler ps = path_state_sampler_bound(st, params.path.seed, PRIMARY_SAMPLE_NAMES);
@@ -406,36 +408,66 @@ __attribute__((always_inline)) inline void gpt_shade_group(
   out->next_wi = wi;
 }
 
-// The shade step of the queue's groups; each work-group appends its rays and records together
-// (group_reserve). shift_groups lists the base_out entries of the groups the shift step takes.
-__kernel void gpt_shade(GdrGptParams params, uint count, __global const GdrRayHit* base_in,
-                        __global GdrRayHit* base_out, __global uint* shift_groups, __global GdrRay* shadow_rays,
+// The base hits' material queues (path/material_queues.h): each entry's key, the BSDF type of
+// its base's hit; a miss is shaded here (the escaped paths' emission: nothing to append).
+__kernel void gpt_route(GdrGptParams params, uint count, __global const GdrRayHit* base_in, __global uint* keys,
                         __global GptBaseState* bases, __global GptOffsetState* offsets, __global float4* acc,
-                        __global float4* pend, __global GbdptCameraVertex* records, __global uint* connectable,
-                        __global uint* counters,
+                        __global float4* pend, __global GbdptCameraVertex* records, __global uint* counters,
                         PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {
-  __local uint scratch[GROUP_RESERVE_SCRATCH];
   uint q = get_global_id(0);
+  if (q >= count) return;
+  if (base_in[q].hit.geomID != GDR_INVALID_ID) {
+    SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
+    keys[q] = material_queue_key(&s, base_in[q].hit.primID);
+    return;
+  }
+  keys[q] = MATERIAL_QUEUE_NONE;
+  if (path_no_segments(params.path.max_depth)) return;
   GptShadeAppend out;
   out.shadows = out.connectable = out.next = out.shift = 0u;
-  if (q < count && !path_no_segments(params.path.max_depth)) {
-    gpt_shade_group(params, q, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,
-                    PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
-  }
-  const uint which[4] = {GPT_COUNTER_SHADOW_RAYS, GPT_COUNTER_CONNECTABLE, GPT_COUNTER_BASE_RAYS,
-                         GPT_COUNTER_SHIFT_GROUPS};
-  uint slot[4] = {out.shadows, out.connectable, out.next, out.shift};
-  group_reserve(scratch, counters, which, 4, slot);
-  if (out.shadows == 0u && out.connectable == 0u && out.next == 0u) return;
-  uint g = base_in[q].ray.id;
-  for (uint j = 0; j < out.shadows; ++j) {
-    write_light_ray(&shadow_rays[slot[0] + j], out.shadow_p[j], out.shadow_ng[j], out.shadow_wi[j], out.shadow_dist[j],
-                    out.shadow_id[j]);
-  }
-  if (out.connectable) connectable[slot[1]] = g;
-  if (out.next) spawn_ray(&base_out[slot[2]], out.next_p, out.next_ng, out.next_wi, g);
-  if (out.shift) shift_groups[slot[3]] = slot[2];
+  gpt_shade_group(params, q, 0, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,
+                  PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
 }
+
+// gpt_shade_<material>: the shade step of the groups whose base hit that material, the queue's
+// entries sorted[first, first + count) (with `direct`, the entries [0, count) themselves, misses
+// included: the scene has one material type); gpt_shade: the whole queue unrouted, every type
+// (`direct`). Each work-group appends its rays and records together (group_reserve).
+// shift_groups lists the base_out entries of the groups the shift step takes.
+#define GPT_SHADE_KERNEL(kernel, TYPE)                                                                               \
+  __kernel void kernel(GdrGptParams params, uint count, uint first, int direct,                                      \
+                       __global const uint* sorted, __global const GdrRayHit* base_in,                               \
+                       __global GdrRayHit* base_out, __global uint* shift_groups,                                    \
+                       __global GdrRay* shadow_rays, __global GptBaseState* bases,                                   \
+                       __global GptOffsetState* offsets, __global float4* acc, __global float4* pend,                \
+                       __global GbdptCameraVertex* records, __global uint* connectable,                              \
+                       __global uint* counters, PRIMARY_SAMPLE_ARGS, SCENE_DATA_ARGS) {                              \
+    __local uint scratch[GROUP_RESERVE_SCRATCH];                                                                     \
+    uint i = get_global_id(0), q = 0;                                                                                \
+    GptShadeAppend out;                                                                                              \
+    out.shadows = out.connectable = out.next = out.shift = 0u;                                                       \
+    if (i < count && !path_no_segments(params.path.max_depth)) {                                                     \
+      q = direct ? i : sorted[first + i];                                                                            \
+      gpt_shade_group(params, q, TYPE, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,    \
+                      PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);                                                       \
+    }                                                                                                                \
+    const uint which[4] = {GPT_COUNTER_SHADOW_RAYS, GPT_COUNTER_CONNECTABLE, GPT_COUNTER_BASE_RAYS,                  \
+                           GPT_COUNTER_SHIFT_GROUPS};                                                                \
+    uint slot[4] = {out.shadows, out.connectable, out.next, out.shift};                                              \
+    group_reserve(scratch, counters, which, 4, slot);                                                                \
+    if (out.shadows == 0u && out.connectable == 0u && out.next == 0u) return;                                        \
+    uint g = base_in[q].ray.id;                                                                                      \
+    for (uint j = 0; j < out.shadows; ++j) {                                                                         \
+      write_light_ray(&shadow_rays[slot[0] + j], out.shadow_p[j], out.shadow_ng[j], out.shadow_wi[j],                \
+                      out.shadow_dist[j], out.shadow_id[j]);                                                         \
+    }                                                                                                                \
+    if (out.connectable) connectable[slot[1]] = g;                                                                   \
+    if (out.next) spawn_ray(&base_out[slot[2]], out.next_p, out.next_ng, out.next_wi, g);                            \
+    if (out.shift) shift_groups[slot[3]] = slot[2];                                                                  \
+  }
+#define GPT_SHADE_QUEUE(name, TYPE) GPT_SHADE_KERNEL(gpt_shade_##name, TYPE)
+GDR_MATERIAL_QUEUES(GPT_SHADE_QUEUE)
+GPT_SHADE_KERNEL(gpt_shade, -1)
 
 // Adds the next-event contributions whose shadow rays Embree found unoccluded.
 __kernel void gpt_shadow(uint count, __global const GdrRay* shadow_rays, __global const float4* pend,

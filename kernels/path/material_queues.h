@@ -25,6 +25,11 @@ inline Bsdf surface_bsdf_of_type(const SceneData* s, const Surface* su, int type
   b.type = type;
   return b;
 }
+// The same in a kernel built for a routed queue (`type` >= 0) or for every type (`type` < 0: the
+// queue was not routed). `type` is a constant in each kernel: the branch folds.
+inline Bsdf surface_bsdf_queued(const SceneData* s, const Surface* su, int type) {
+  return type < 0 ? surface_bsdf(s, su) : surface_bsdf_of_type(s, su, type);
+}
 
 #if !defined(GDR_BSDF_SELECTED) || defined(GDR_BSDF_DIFFUSE)
 #define GDR_QUEUE_DIFFUSE(X) X(diffuse, BSDF_DIFFUSE)

@@ -72,10 +72,12 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
       kernels_(in.context, in.scene, gpt_defines(in, gpt, kind)),
       generate_(kernels_.make(program(), "gpt_generate")),
       scatter_(kernels_.make(program(), "gpt_scatter")),
-      shade_(kernels_.make(program(), "gpt_shade")),
+      route_(kernels_.make(program(), "gpt_route")),
       shadow_(kernels_.make(program(), "gpt_shadow")),
       shift_(kernels_.make(program(), "gpt_shift")),
       capacity_(capacity),
+      materials_(in.context, in.scene, kernels_, program(), "gpt_shade", capacity_,
+                 gpt.route_materials.value_or(!in.context.is_cpu())),
       base_queues_(in.context, capacity_, false),
       shift_groups_(in.context, capacity_),
       offset_rays_(in.context, capacity_ * GPT_OFFSETS, ray_queue_flags(in.context)),
@@ -107,6 +109,25 @@ GdrGptParams GradientGroups::params(const RenderSettings& settings, uint32_t sam
   p.shift = gpt_.shift;
   p.shift_threshold = gpt_.shift_threshold;
   return p;
+}
+
+void GradientGroups::shade(const GdrGptParams& p, const PrimarySamples& primary, const Buffer<GdrRayHit>& base_in,
+                           Buffer<GdrRayHit>& base_out, cl_uint active) {
+  counters_.reset();
+  if (!materials_.direct()) {
+    route_
+        .args(p, active, base_in, materials_.keys(), bases_, offsets_, acc_, pend_, records_, counters_.buffer(),
+              primary, in_.device_scene)
+        .run(active);
+  }
+  for (const MaterialQueues::Queue& q : materials_.route(active)) {
+    q.kernel
+        ->args(p, q.count, q.first, cl_int(materials_.direct()), materials_.entries(), base_in, base_out,
+               shift_groups_, shadow_rays_, bases_, offsets_, acc_, pend_, records_, connectable_,
+               counters_.buffer(), primary, in_.device_scene)
+        .run(q.count);
+  }
+  counters_.read();
 }
 
 void GradientGroups::intersect_offsets(cl_uint rays, cl_uint reconnects, bool coherent) {
@@ -163,12 +184,7 @@ void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary,
 
   cl_uint active = count;
   for (int cur = 0, depth = 0; active > 0; cur = 1 - cur, ++depth) {
-    counters_.reset();
-    shade_
-        .args(p, active, base_rays[cur], base_rays[1 - cur], shift_groups_, shadow_rays_, bases_, offsets_, acc_,
-              pend_, records_, connectable_, counters_.buffer(), primary, in_.device_scene)
-        .run(active);
-    counters_.read();
+    shade(p, primary, base_rays[cur], base_rays[1 - cur], active);
     const cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], connectable = counters_[GPT_COUNTER_CONNECTABLE];
     const cl_uint shifting = counters_[GPT_COUNTER_SHIFT_GROUPS];
     intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");

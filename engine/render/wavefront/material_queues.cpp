@@ -5,14 +5,17 @@
 namespace gdr {
 
 MaterialQueues::MaterialQueues(Context& ctx, const Scene& scene, const KernelFactory& kernels,
-                               const std::string& program, const std::string& stage, size_t capacity)
+                               const std::string& program, const std::string& stage, size_t capacity, bool routed)
     : primitives_(ctx) {
   std::vector<cl_uint> types;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
-    if (!scene.features.bsdf[t]) continue;
-    kinds_.push_back(kernels.make(program, stage + "_" + bsdf_type_name(t)));
-    types.push_back(cl_uint(t));
+    if (scene.features.bsdf[t]) types.push_back(cl_uint(t));
   }
+  if (!routed && types.size() > 1) {
+    kinds_.push_back(kernels.make(program, stage));
+    return;
+  }
+  for (cl_uint t : types) kinds_.push_back(kernels.make(program, stage + "_" + bsdf_type_name(int(t))));
   if (!direct()) {
     types_ = Buffer<cl_uint>(ctx, types);
     keys_ = Buffer<cl_uint>(ctx, capacity);

@@ -4,7 +4,8 @@
 // depend on the routing), all types selected together with one read of their counts. Each queue
 // is shaded by its own kernel, `<stage>_<type>` (e.g. pt_shade_diffuse), specialized for that
 // material; a type the scene lacks has no queue and no launch. With one type there is nothing to
-// route: its kernel takes the whole queue (direct).
+// route: its kernel takes the whole queue (direct). Unrouted, a scene of several types has one
+// queue, shaded by `<stage>` itself (built for the scene's types), also direct.
 #pragma once
 #include <string>
 #include <vector>
@@ -18,8 +19,9 @@ namespace gdr {
 class MaterialQueues {
  public:
   // The kernels `stage`_<type> of `program` for the scene's types; up to `capacity` entries.
+  // `routed` false: `stage` for all of them, where the scene has several.
   MaterialQueues(Context& context, const Scene& scene, const KernelFactory& kernels, const std::string& program,
-                 const std::string& stage, size_t capacity);
+                 const std::string& stage, size_t capacity, bool routed = true);
 
   struct Queue {
     cl_uint count;                  // entries
@@ -33,7 +35,8 @@ class MaterialQueues {
   // The routed entries' positions in the routed queue, each type's from its queue's `first` on
   // (unused when direct).
   const Buffer<cl_uint>& entries() const { return entries_; }
-  // No routing: the scene has one material type, whose kernel takes the queue as it is.
+  // No routing: the scene has one material type, whose kernel takes the queue as it is (or the
+  // queues are not routed).
   bool direct() const { return kinds_.size() == 1; }
   // The non-empty queues of the first n routed entries (direct: the one type's, all n entries).
   const std::vector<Queue>& route(cl_uint n);
