@@ -152,8 +152,8 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
                              ->group("Integrator parameters");
   param("--batches", "batches",
-        "batches of paths a chunk, stepped in turn so that the device shades one while Embree traces the "
-        "other: 1 | 2 (default)")
+        "batches of paths (gpt: groups) a chunk, stepped in turn so that the device shades one while Embree "
+        "traces the other: 1 | 2 (default: 2; gpt: 2 on a GPU, 1 on a CPU device)")
       ->check(CLI::IsMember({"1", "2"}));
   param("--chains", "chains", "Markov chains run side by side (default: one a pixel, at most 32768)")->check(CLI::Range(1, 1 << 30));
   param("--bootstrap", "bootstrap", "bootstrap samples of the normalization and the chains' starts (default: four a chain, at least 65536)")

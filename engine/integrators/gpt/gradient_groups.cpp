@@ -15,6 +15,8 @@ namespace {
 // with the manifold shift up to four walks (about 2 KiB more).
 constexpr size_t kMaxGroupsInFlight = size_t(1) << 17;
 constexpr size_t kMaxManifoldGroupsInFlight = size_t(1) << 15;
+// Fewer groups than this a batch would leave launches and Embree's calls too small to pay.
+constexpr size_t kMinBatchGroups = size_t(1) << 13;
 
 // G-BDPT's and G-VCM's groups connect to light subpaths.
 bool connects(GroupKind kind) { return kind == GroupKind::kConnecting || kind == GroupKind::kConnectingMerging; }
@@ -64,6 +66,22 @@ const char* GradientGroups::program() const {
   }
 }
 
+GradientGroups::Batch::Batch(const RenderInputs& in, const KernelFactory& kernels, const char* program,
+                             size_t capacity, GroupKind kind, bool route, int command_queue)
+    : command_queue(command_queue),
+      materials(in.context, in.scene, kernels, program, "gpt_shade", capacity, route),
+      base_queues(in.context, capacity, false),
+      shift_groups(in.context, capacity),
+      offset_rays(in.context, capacity * GPT_OFFSETS, ray_queue_flags(in.context)),
+      reconnect_rays(in.context, capacity * GPT_OFFSETS, ray_queue_flags(in.context)),
+      shadow_rays(in.context, capacity * (GPT_OFFSETS + 1), ray_queue_flags(in.context)),
+      bases(in.context, capacity),
+      offsets(in.context, capacity * GPT_OFFSETS),
+      pend(in.context, capacity * GPT_PEND_COUNT),
+      records(in.context, kind == GroupKind::kPaths ? 0 : capacity),
+      connectable(in.context, kind == GroupKind::kPaths ? 0 : capacity),
+      counters(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)) {}
+
 GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, size_t capacity, size_t indices,
                                GroupKind kind)
     : in_(in),
@@ -76,21 +94,18 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
       shadow_(kernels_.make(program(), "gpt_shadow")),
       shift_(kernels_.make(program(), "gpt_shift")),
       capacity_(capacity),
-      materials_(in.context, in.scene, kernels_, program(), "gpt_shade", capacity_,
-                 gpt.route_materials.value_or(!in.context.is_cpu())),
-      base_queues_(in.context, capacity_, false),
-      shift_groups_(in.context, capacity_),
-      offset_rays_(in.context, capacity_ * GPT_OFFSETS, ray_queue_flags(in.context)),
-      reconnect_rays_(in.context, capacity_ * GPT_OFFSETS, ray_queue_flags(in.context)),
-      shadow_rays_(in.context, capacity_ * (GPT_OFFSETS + 1), ray_queue_flags(in.context)),
-      bases_(in.context, capacity_),
-      offsets_(in.context, capacity_ * GPT_OFFSETS),
-      acc_(in.context, indices * GPT_ACC_COUNT),
-      pend_(in.context, capacity_ * GPT_PEND_COUNT),
-      records_(in.context, kind == GroupKind::kPaths ? 0 : capacity_),
-      connectable_(in.context, kind == GroupKind::kPaths ? 0 : capacity_),
-      counters_(in.context, GDR_COUNTER_NAMES(GPT_COUNTERS)) {
+      acc_(in.context, indices * GPT_ACC_COUNT) {
   const bool manifold = gpt_manifold_enabled(in.scene, gpt);
+  // Batches step G-PT's own groups only: the others share their light subpaths' and merges'
+  // buffers, and the manifold stage its walks'.
+  const int wanted = gpt.batches > 0 ? gpt.batches : in.context.is_cpu() ? 1 : 2;
+  const int batches =
+      kind == GroupKind::kPaths && !manifold && wanted > 1 && capacity_ >= kMinBatchGroups * size_t(wanted) ? wanted : 1;
+  const bool route = gpt.route_materials.value_or(!in.context.is_cpu());
+  for (int i = 0; i < batches; ++i) {
+    batches_.emplace_back(in, kernels_, program(), (capacity_ + size_t(batches) - 1) / size_t(batches), kind, route,
+                          i % Context::kQueues);
+  }
   chains_ = Buffer<GptChain>(in.context, manifold ? capacity_ : 0);
   walks_ = Buffer<GdrManifoldWalk>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
   walk_results_ = Buffer<GdrManifoldResult>(in.context, manifold ? capacity_ * GPT_OFFSETS : 0);
@@ -111,104 +126,184 @@ GdrGptParams GradientGroups::params(const RenderSettings& settings, uint32_t sam
   return p;
 }
 
-void GradientGroups::shade(const GdrGptParams& p, const PrimarySamples& primary, const Buffer<GdrRayHit>& base_in,
-                           Buffer<GdrRayHit>& base_out, cl_uint active) {
-  counters_.reset();
-  if (!materials_.direct()) {
+void GradientGroups::generate(Batch& b, const GdrGptParams& p, const PrimarySamples& primary) {
+  b.counters.reset();
+  generate_
+      .args(in_.device_scene.camera(), p, b.base_queues.rays[0], b.offset_rays, b.bases, b.offsets, chains_, acc_,
+            b.counters.buffer(), primary)
+      .run(p.path.pixel_count);
+}
+
+void GradientGroups::enqueue_shade(Batch& b, const PrimarySamples& primary) {
+  const Buffer<GdrRayHit>& base_in = b.base_queues.rays[b.cur];
+  b.counters.reset();
+  if (!b.materials.direct()) {
     route_
-        .args(p, active, base_in, materials_.keys(), bases_, offsets_, acc_, pend_, records_, counters_.buffer(),
-              primary, in_.device_scene)
-        .run(active);
+        .args(b.params, b.active, base_in, b.materials.keys(), b.bases, b.offsets, acc_, b.pend, b.records,
+              b.counters.buffer(), primary, in_.device_scene)
+        .run(b.active);
   }
-  for (const MaterialQueues::Queue& q : materials_.route(active)) {
+  for (const MaterialQueues::Queue& q : b.materials.route(b.active)) {
     q.kernel
-        ->args(p, q.count, q.first, cl_int(materials_.direct()), materials_.entries(), base_in, base_out,
-               shift_groups_, shadow_rays_, bases_, offsets_, acc_, pend_, records_, connectable_,
-               counters_.buffer(), primary, in_.device_scene)
+        ->args(b.params, q.count, q.first, cl_int(b.materials.direct()), b.materials.entries(), base_in,
+               b.base_queues.rays[1 - b.cur], b.shift_groups, b.shadow_rays, b.bases, b.offsets, acc_, b.pend,
+               b.records, b.connectable, b.counters.buffer(), primary, in_.device_scene)
         .run(q.count);
   }
-  counters_.read();
 }
 
-void GradientGroups::intersect_offsets(cl_uint rays, cl_uint reconnects, bool coherent) {
-  intersect(in_.embree, offset_rays_, rays, coherent, "offset");
-  occlude(in_.embree, reconnect_rays_, reconnects, "reconnection");
-  scatter_.args(rays, offset_rays_, reconnects, reconnect_rays_, offsets_).run(rays + reconnects);
+void GradientGroups::enqueue_shift(Batch& b, const PrimarySamples& primary, cl_uint shifting) {
+  b.counters.reset();
+  shift_
+      .args(b.params, shifting, b.shift_groups, b.base_queues.rays[1 - b.cur], b.offset_rays, b.reconnect_rays,
+            b.bases, b.offsets, chains_, walks_, b.counters.buffer(), primary, in_.device_scene)
+      .run(shifting);
 }
 
-void GradientGroups::walk_offsets(const GdrGptParams& p, cl_uint walks) {
+void GradientGroups::intersect_offsets(Batch& b, cl_uint rays, cl_uint reconnects, bool coherent) {
+  intersect(in_.embree, b.offset_rays, rays, coherent, "offset");
+  occlude(in_.embree, b.reconnect_rays, reconnects, "reconnection");
+  scatter_.args(rays, b.offset_rays, reconnects, b.reconnect_rays, b.offsets).run(rays + reconnects);
+}
+
+void GradientGroups::walk_offsets(Batch& b, const GdrGptParams& p, cl_uint walks) {
   if (!manifold_ || walks == 0) return;
   manifold_->solve(walks_, walks, walk_results_, p.path);
-  counters_.reset();
-  join_->args(p, walks, walks_, walk_results_, chains_, offsets_, counters_.buffer(), in_.device_scene).run(walks);
-  counters_.read();
+  b.counters.reset();
+  join_->args(p, walks, walks_, walk_results_, chains_, b.offsets, b.counters.buffer(), in_.device_scene).run(walks);
+  b.counters.read();
 }
 
-void GradientGroups::add_shadows(cl_uint count, const char* kind, bool coherent) {
+void GradientGroups::add_shadows(Batch& b, cl_uint count, const char* kind, bool coherent) {
   if (count == 0) return;
-  occlude(in_.embree, shadow_rays_, count, kind, coherent);
-  shadow_.args(count, shadow_rays_, pend_, bases_, acc_).run(count);
+  occlude(in_.embree, b.shadow_rays, count, kind, coherent);
+  shadow_.args(count, b.shadow_rays, b.pend, b.bases, acc_).run(count);
 }
 
-void GradientGroups::connect(const GdrGptParams& p, int camera_depth, cl_uint connectable,
+void GradientGroups::connect(Batch& b, const GdrGptParams& p, int camera_depth, cl_uint connectable,
                              const GroupLightSubpaths& light) {
   // Vertex j of a light subpath lies j + 1 bounces or more from its light, and the connection
   // adds a segment.
   const int max_depth = p.path.max_depth;
   const int last = max_depth < 0 ? light.stored_bound : std::min(light.stored_bound, max_depth - camera_depth - 1);
   for (int j = 0; j < last; ++j) {
-    counters_.reset();
+    b.counters.reset();
     connect_
-        ->args(p, connectable, cl_uint(j), light.stride, connectable_, records_, light.paths, light.store,
-               shadow_rays_, pend_, counters_.buffer(), in_.device_scene)
+        ->args(p, connectable, cl_uint(j), light.stride, b.connectable, b.records, light.paths, light.store,
+               b.shadow_rays, b.pend, b.counters.buffer(), in_.device_scene)
         .run(connectable);
-    counters_.read();
-    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "connection", false);
+    b.counters.read();
+    add_shadows(b, b.counters[GPT_COUNTER_SHADOW_RAYS], "connection", false);
   }
+}
+
+void GradientGroups::trace_batch(Batch& b, const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
+                                 const GroupLightSubpaths* light, const RecordsStep& merge) {
+  const cl_uint count = p.path.pixel_count;
+  b.params = p;
+  b.cur = 0;
+  generate(b, p, primary);
+  b.counters.read();
+  intersect(in_.embree, b.base_queues.rays[0], count, true, "camera");
+  if (aux) aux->add(p.path, b.base_queues.rays[0], count, in_.device_scene);
+  intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], 0, true);  // camera rays of the neighbour pixels
+
+  b.active = count;
+  for (int depth = 0; b.active > 0; ++depth) {
+    enqueue_shade(b, primary);
+    b.counters.read();
+    const cl_uint next = b.counters[GPT_COUNTER_BASE_RAYS], connectable = b.counters[GPT_COUNTER_CONNECTABLE];
+    const cl_uint shifting = b.counters[GPT_COUNTER_SHIFT_GROUPS];
+    intersect(in_.embree, b.base_queues.rays[1 - b.cur], next, false, "bounce");
+    add_shadows(b, b.counters[GPT_COUNTER_SHADOW_RAYS], "shadow", depth == 0);
+    if (light && connectable > 0) connect(b, p, depth + 1, connectable, *light);
+    if (merge && connectable > 0) merge(connectable);
+    if (shifting > 0) {
+      enqueue_shift(b, primary, shifting);
+      b.counters.read();
+      const cl_uint offset_rays = b.counters[GPT_COUNTER_OFFSET_RAYS];
+      const cl_uint reconnects = b.counters[GPT_COUNTER_RECONNECT_RAYS];
+      walk_offsets(b, p, b.counters[GPT_COUNTER_MANIFOLD_WALKS]);
+      intersect_offsets(b, offset_rays, reconnects, false);
+    }
+    b.active = next;
+    b.cur = 1 - b.cur;
+  }
+}
+
+void GradientGroups::step(Batch& b, const PrimarySamples& primary, AuxLayers* aux) {
+  QueueScope scope(in_.context, b.command_queue);
+  b.counters.read();  // waits for what the batch's device was running
+  switch (b.phase) {
+    case Batch::Phase::kGenerating:
+      intersect(in_.embree, b.base_queues.rays[0], b.active, true, "camera");
+      if (aux) aux->add(b.params.path, b.base_queues.rays[0], b.active, in_.device_scene);
+      intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], 0, true);
+      break;
+    case Batch::Phase::kShading: {
+      b.next = b.counters[GPT_COUNTER_BASE_RAYS];
+      const cl_uint shifting = b.counters[GPT_COUNTER_SHIFT_GROUPS];
+      intersect(in_.embree, b.base_queues.rays[1 - b.cur], b.next, false, "bounce");
+      add_shadows(b, b.counters[GPT_COUNTER_SHADOW_RAYS], "shadow", b.depth == 0);
+      if (shifting > 0) {
+        enqueue_shift(b, primary, shifting);
+        b.phase = Batch::Phase::kShifting;
+        return;
+      }
+      break;
+    }
+    case Batch::Phase::kShifting:
+      intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], b.counters[GPT_COUNTER_RECONNECT_RAYS], false);
+      break;
+    case Batch::Phase::kDone: return;
+  }
+  if (b.phase != Batch::Phase::kGenerating) {
+    b.active = b.next;
+    b.cur = 1 - b.cur;
+    ++b.depth;
+  }
+  if (b.active == 0) {
+    b.phase = Batch::Phase::kDone;
+    return;
+  }
+  enqueue_shade(b, primary);
+  b.phase = Batch::Phase::kShading;
 }
 
 void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
                            const GroupLightSubpaths* light, const RecordsStep& merge) {
-  Buffer<GdrRayHit>* base_rays = base_queues_.rays;
-  const cl_uint count = p.path.pixel_count;
-
-  counters_.reset();
-  generate_
-      .args(in_.device_scene.camera(), p, base_rays[0], offset_rays_, bases_, offsets_, chains_, acc_,
-            counters_.buffer(), primary)
-      .run(count);
-  counters_.read();
-  intersect(in_.embree, base_rays[0], count, true, "camera");
-  if (aux) aux->add(p.path, base_rays[0], count, in_.device_scene);
-  intersect_offsets(counters_[GPT_COUNTER_OFFSET_RAYS], 0, true);  // camera rays of the neighbour pixels
-
-  cl_uint active = count;
-  for (int cur = 0, depth = 0; active > 0; cur = 1 - cur, ++depth) {
-    shade(p, primary, base_rays[cur], base_rays[1 - cur], active);
-    const cl_uint next = counters_[GPT_COUNTER_BASE_RAYS], connectable = counters_[GPT_COUNTER_CONNECTABLE];
-    const cl_uint shifting = counters_[GPT_COUNTER_SHIFT_GROUPS];
-    intersect(in_.embree, base_rays[1 - cur], next, false, "bounce");
-    add_shadows(counters_[GPT_COUNTER_SHADOW_RAYS], "shadow", depth == 0);
-    if (light && connectable > 0) connect(p, depth + 1, connectable, *light);
-    if (merge && connectable > 0) merge(connectable);
-    if (shifting > 0) {
-      counters_.reset();
-      shift_
-          .args(p, shifting, shift_groups_, base_rays[1 - cur], offset_rays_, reconnect_rays_, bases_, offsets_,
-                chains_, walks_, counters_.buffer(), primary, in_.device_scene)
-          .run(shifting);
-      counters_.read();
-      const cl_uint offset_rays = counters_[GPT_COUNTER_OFFSET_RAYS];
-      const cl_uint reconnects = counters_[GPT_COUNTER_RECONNECT_RAYS];
-      walk_offsets(p, counters_[GPT_COUNTER_MANIFOLD_WALKS]);
-      intersect_offsets(offset_rays, reconnects, false);
-    }
-    active = next;
+  if (batches_.size() == 1) {
+    trace_batch(batches_[0], p, primary, aux, light, merge);
+    return;
   }
+  // Consecutive path ranges, one a batch: every path's accumulators are written by one batch.
+  const cl_uint count = p.path.pixel_count, per = (count + cl_uint(batches_.size()) - 1) / cl_uint(batches_.size());
+  cl_uint start = 0;
+  for (Batch& b : batches_) {
+    b.params = p;
+    b.params.path.first_pixel = p.path.first_pixel + start;
+    b.params.path.pixel_count = b.active = start < count ? std::min(per, count - start) : 0;
+    b.cur = b.depth = 0;
+    b.phase = b.active > 0 ? Batch::Phase::kGenerating : Batch::Phase::kDone;
+    start += per;
+    if (b.active == 0) continue;
+    QueueScope scope(in_.context, b.command_queue);
+    generate(b, b.params, primary);
+  }
+  for (bool busy = true; busy;) {
+    busy = false;
+    for (Batch& b : batches_) {
+      if (b.phase == Batch::Phase::kDone) continue;
+      step(b, primary, aux);
+      busy = true;
+    }
+  }
+  // A batch's last shadows may still run on its queue: the pass's gather reads every path's sums.
+  in_.context.finish();
 }
 
 void GradientGroups::report(Stats* stats) {
-  counters_.report(stats);
+  for (Batch& b : batches_) b.counters.report(stats);
   if (manifold_) manifold_->report(stats);
 }
 

@@ -10,6 +10,7 @@
 // gradient-domain photon mapper's end at the base's first rough vertex, which its merge stage
 // (gbidir/photon_shifts.h) takes over from the records after each shade step.
 #pragma once
+#include <deque>
 #include <functional>
 #include <optional>
 
@@ -37,6 +38,12 @@ struct GptSettings {
   // The bases' hits routed to per-material queues (render/wavefront/material_queues.h); unset: on
   // a GPU, not on a CPU device, where routing took the glass box's G-PT 1.05-1.07 times as long.
   std::optional<bool> route_materials;
+  // G-PT's groups split into this many batches a chunk (1 or 2), stepped in turn so that the
+  // device shades one while Embree traces the other (GradientGroups::trace); 1 with the manifold
+  // shift and for the other kinds of groups, or where a batch would hold too few groups. 0: the
+  // device's default, 2 on a GPU and 1 on a CPU device, whose cores the kernels share with
+  // Embree (two batches took gpt 1.03 times as long on the Cornell box, 512 px, two cores).
+  int batches = 0;
 };
 // The shift's parameters (shift, shift_threshold, manifold_*), with `shift` defaulting to
 // `default_shift`.
@@ -78,14 +85,15 @@ class GradientGroups {
 
   const KernelFactory& kernels() const { return kernels_; }
   size_t capacity() const { return capacity_; }
+  size_t batches() const { return batches_.size(); }
   Buffer<Vec4>& acc() { return acc_; }
-  // The base paths' states after a trace (a group's path.depth: the depth it ended at).
-  const Buffer<GptBaseState>& bases() const { return bases_; }
+  // The base paths' states after a trace (a group's path.depth: the depth it ended at); one batch.
+  const Buffer<GptBaseState>& bases() const { return batches_[0].bases; }
   // Connecting and merging groups: the vertices the last shade step recorded (records()[g]), for
   // the groups listed in connectable(); the counters the steps after it count into.
-  const Buffer<GbdptCameraVertex>& records() const { return records_; }
-  const Buffer<cl_uint>& connectable() const { return connectable_; }
-  DeviceCounters& counters() { return counters_; }
+  const Buffer<GbdptCameraVertex>& records() const { return batches_[0].records; }
+  const Buffer<cl_uint>& connectable() const { return batches_[0].connectable; }
+  DeviceCounters& counters() { return batches_[0].counters; }
 
   // Called after each shade step of merging groups (and after the connections of connecting and
   // merging ones) with the number of groups it recorded.
@@ -93,26 +101,63 @@ class GradientGroups {
 
   // The groups of paths [p.path.first_pixel, + p.path.pixel_count), their sums into acc.
   // `aux`: the base camera rays' first hits. `light`: connecting groups' light subpaths.
-  // `merge`: merging groups' merge step.
+  // `merge`: merging groups' merge step. With two batches, each takes a consecutive half of the
+  // paths; the sums do not depend on the split.
   void trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
              const GroupLightSubpaths* light = nullptr, const RecordsStep& merge = {});
   GdrGptParams params(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) const;
   void report(Stats* stats);
 
  private:
-  // The shade step of the `active` groups whose bases' rays are base_in, by the material queues of
-  // the bases' hits (the next rays to base_out); reads the counters.
-  void shade(const GdrGptParams& p, const PrimarySamples& primary, const Buffer<GdrRayHit>& base_in,
-             Buffer<GdrRayHit>& base_out, cl_uint active);
+  // A part of a chunk's groups in flight: its queues, states and counters, its command queue, and
+  // where it stands in its bounce loop (stepped batches: GradientGroups::step).
+  struct Batch {
+    Batch(const RenderInputs& in, const KernelFactory& kernels, const char* program, size_t capacity, GroupKind kind,
+          bool route, int command_queue);
+    int command_queue;
+    MaterialQueues materials;  // the bases' hits by BSDF type, each type shaded by gpt_shade_<type>
+    RayQueues base_queues;
+    Buffer<cl_uint> shift_groups;  // the next base queue's entries whose groups have offsets to shift
+    Buffer<GdrRayHit> offset_rays;
+    Buffer<GdrRay> reconnect_rays;
+    Buffer<GdrRay> shadow_rays;
+    Buffer<GptBaseState> bases;
+    Buffer<GptOffsetState> offsets;
+    Buffer<Vec4> pend;  // GPT_PEND_COUNT per group
+    Buffer<GbdptCameraVertex> records;  // connecting groups: the rough vertex of the last shade step
+    Buffer<cl_uint> connectable;        // and the groups that recorded one
+    DeviceCounters counters;
+    // Stepping: the batch's paths, what its device runs (`phase`), its `active` groups in base
+    // queue `cur`, and the base rays the last shade step queued (`next`).
+    enum class Phase { kGenerating, kShading, kShifting, kDone };
+    GdrGptParams params{};
+    Phase phase = Phase::kDone;
+    cl_uint active = 0, next = 0;
+    int cur = 0, depth = 0;
+  };
+
+  // The bounce loop of one batch (every kind of group), waiting for each step's counters.
+  void trace_batch(Batch& b, const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
+                   const GroupLightSubpaths* light, const RecordsStep& merge);
+  // One step of batch b: it waits for what its device was running, traces the rays that gave
+  // (Embree), and queues its next kernels without waiting.
+  void step(Batch& b, const PrimarySamples& primary, AuxLayers* aux);
+  void generate(Batch& b, const GdrGptParams& p, const PrimarySamples& primary);
+  // Queues the shade step of b's `active` groups in base queue `cur` (counters reset first; the
+  // material queues' routing reads their counts where it routes).
+  void enqueue_shade(Batch& b, const PrimarySamples& primary);
+  // Queues the shift step of the `shifting` groups the last shade step listed.
+  void enqueue_shift(Batch& b, const PrimarySamples& primary, cl_uint shifting);
   // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
-  void intersect_offsets(cl_uint rays, cl_uint reconnects, bool coherent);
+  void intersect_offsets(Batch& b, cl_uint rays, cl_uint reconnects, bool coherent);
   // Solves the walks the shift step queued and joins their offsets to the base.
-  void walk_offsets(const GdrGptParams& p, cl_uint walks);
+  void walk_offsets(Batch& b, const GdrGptParams& p, cl_uint walks);
   // The pending values behind the shadow rays written since the last reset, where unoccluded.
-  void add_shadows(cl_uint count, const char* kind, bool coherent);
+  void add_shadows(Batch& b, cl_uint count, const char* kind, bool coherent);
   // The recorded vertices (`connectable` of them, `camera_depth` segments from the camera) to
   // the light subpaths' stored vertices, one launch a vertex index.
-  void connect(const GdrGptParams& p, int camera_depth, cl_uint connectable, const GroupLightSubpaths& light);
+  void connect(Batch& b, const GdrGptParams& p, int camera_depth, cl_uint connectable,
+               const GroupLightSubpaths& light);
 
   RenderInputs in_;
   GptSettings gpt_;
@@ -120,20 +165,9 @@ class GradientGroups {
   KernelFactory kernels_;
   Kernel generate_, scatter_, route_, shadow_, shift_;
   size_t capacity_;
-  MaterialQueues materials_;  // the bases' hits by BSDF type, each type shaded by gpt_shade_<type>
-  RayQueues base_queues_;
-  Buffer<cl_uint> shift_groups_;  // the next base queue's entries whose groups have offsets to shift
-  Buffer<GdrRayHit> offset_rays_;
-  Buffer<GdrRay> reconnect_rays_;
-  Buffer<GdrRay> shadow_rays_;
-  Buffer<GptBaseState> bases_;
-  Buffer<GptOffsetState> offsets_;
+  std::deque<Batch> batches_;
   Buffer<Vec4> acc_;
-  Buffer<Vec4> pend_;  // GPT_PEND_COUNT per group
-  Buffer<GbdptCameraVertex> records_;  // connecting groups: the rough vertex of the last shade step
-  Buffer<cl_uint> connectable_;        // and the groups that recorded one
   std::optional<Kernel> connect_;
-  DeviceCounters counters_;
   // The manifold shift, where the scene has specular chains (else --shift manifold is hybrid).
   Buffer<GptChain> chains_;
   Buffer<GdrManifoldWalk> walks_;

@@ -6,12 +6,13 @@
 
 namespace gdr {
 
-const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
+const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", "batches", "manifold_iterations",
                                              "manifold_tolerance", "manifold_precision"};
 
 GptSettings gpt_settings(const IntegratorParams& params) {
   GptSettings s = gpt_shift_settings(params);
   s.aux = params.flag("aux", false);
+  if (params.has("batches")) s.batches = params.choice("batches", "2", {"1", "2"}) == "1" ? 1 : 2;
   return s;
 }
 

@@ -11,6 +11,8 @@
 //                    rejoin the base; render/manifold_walks.h has the walk's settings)
 //   shift_threshold  roughness at or below which a vertex is glossy, not reconnected (0.001)
 //   aux              true: also write the first hits' albedo, normal and depth layers
+//   batches          1 or 2 batches of groups a chunk, stepped in turn for host/device overlap
+//                    (default: 2 on a GPU, 1 on a CPU device; GptSettings::batches)
 //   recon, recon_solver, alpha: the reconstruction (render/gradient_images.h)
 #pragma once
 #include <optional>
