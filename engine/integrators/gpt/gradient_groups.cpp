@@ -126,15 +126,7 @@ GdrGptParams GradientGroups::params(const RenderSettings& settings, uint32_t sam
   return p;
 }
 
-void GradientGroups::generate(Batch& b, const GdrGptParams& p, const PrimarySamples& primary) {
-  b.counters.reset();
-  generate_
-      .args(in_.device_scene.camera(), p, b.base_queues.rays[0], b.offset_rays, b.bases, b.offsets, chains_, acc_,
-            b.counters.buffer(), primary)
-      .run(p.path.pixel_count);
-}
-
-void GradientGroups::enqueue_shade(Batch& b, const PrimarySamples& primary) {
+void GradientGroups::shade(Batch& b, const PrimarySamples& primary) {
   const Buffer<GdrRayHit>& base_in = b.base_queues.rays[b.cur];
   b.counters.reset();
   if (!b.materials.direct()) {
@@ -152,25 +144,17 @@ void GradientGroups::enqueue_shade(Batch& b, const PrimarySamples& primary) {
   }
 }
 
-void GradientGroups::enqueue_shift(Batch& b, const PrimarySamples& primary, cl_uint shifting) {
-  b.counters.reset();
-  shift_
-      .args(b.params, shifting, b.shift_groups, b.base_queues.rays[1 - b.cur], b.offset_rays, b.reconnect_rays,
-            b.bases, b.offsets, chains_, walks_, b.counters.buffer(), primary, in_.device_scene)
-      .run(shifting);
-}
-
 void GradientGroups::intersect_offsets(Batch& b, cl_uint rays, cl_uint reconnects, bool coherent) {
   intersect(in_.embree, b.offset_rays, rays, coherent, "offset");
   occlude(in_.embree, b.reconnect_rays, reconnects, "reconnection");
   scatter_.args(rays, b.offset_rays, reconnects, b.reconnect_rays, b.offsets).run(rays + reconnects);
 }
 
-void GradientGroups::walk_offsets(Batch& b, const GdrGptParams& p, cl_uint walks) {
+void GradientGroups::walk_offsets(Batch& b, cl_uint walks) {
   if (!manifold_ || walks == 0) return;
-  manifold_->solve(walks_, walks, walk_results_, p.path);
+  manifold_->solve(walks_, walks, walk_results_, b.params.path);
   b.counters.reset();
-  join_->args(p, walks, walks_, walk_results_, chains_, b.offsets, b.counters.buffer(), in_.device_scene).run(walks);
+  join_->args(b.params, walks, walks_, walk_results_, chains_, b.offsets, b.counters.buffer(), in_.device_scene).run(walks);
   b.counters.read();
 }
 
@@ -180,16 +164,15 @@ void GradientGroups::add_shadows(Batch& b, cl_uint count, const char* kind, bool
   shadow_.args(count, b.shadow_rays, b.pend, b.bases, acc_).run(count);
 }
 
-void GradientGroups::connect(Batch& b, const GdrGptParams& p, int camera_depth, cl_uint connectable,
-                             const GroupLightSubpaths& light) {
+void GradientGroups::connect(Batch& b, int camera_depth, cl_uint connectable, const GroupLightSubpaths& light) {
   // Vertex j of a light subpath lies j + 1 bounces or more from its light, and the connection
   // adds a segment.
-  const int max_depth = p.path.max_depth;
+  const int max_depth = b.params.path.max_depth;
   const int last = max_depth < 0 ? light.stored_bound : std::min(light.stored_bound, max_depth - camera_depth - 1);
   for (int j = 0; j < last; ++j) {
     b.counters.reset();
     connect_
-        ->args(p, connectable, cl_uint(j), light.stride, b.connectable, b.records, light.paths, light.store,
+        ->args(b.params, connectable, cl_uint(j), light.stride, b.connectable, b.records, light.paths, light.store,
                b.shadow_rays, b.pend, b.counters.buffer(), in_.device_scene)
         .run(connectable);
     b.counters.read();
@@ -197,109 +180,94 @@ void GradientGroups::connect(Batch& b, const GdrGptParams& p, int camera_depth, 
   }
 }
 
-void GradientGroups::trace_batch(Batch& b, const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
-                                 const GroupLightSubpaths* light, const RecordsStep& merge) {
-  const cl_uint count = p.path.pixel_count;
+void GradientGroups::start(Batch& b, const GdrGptParams& p, const PrimarySamples& primary) {
   b.params = p;
-  b.cur = 0;
-  generate(b, p, primary);
-  b.counters.read();
-  intersect(in_.embree, b.base_queues.rays[0], count, true, "camera");
-  if (aux) aux->add(p.path, b.base_queues.rays[0], count, in_.device_scene);
-  intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], 0, true);  // camera rays of the neighbour pixels
-
-  b.active = count;
-  for (int depth = 0; b.active > 0; ++depth) {
-    enqueue_shade(b, primary);
-    b.counters.read();
-    const cl_uint next = b.counters[GPT_COUNTER_BASE_RAYS], connectable = b.counters[GPT_COUNTER_CONNECTABLE];
-    const cl_uint shifting = b.counters[GPT_COUNTER_SHIFT_GROUPS];
-    intersect(in_.embree, b.base_queues.rays[1 - b.cur], next, false, "bounce");
-    add_shadows(b, b.counters[GPT_COUNTER_SHADOW_RAYS], "shadow", depth == 0);
-    if (light && connectable > 0) connect(b, p, depth + 1, connectable, *light);
-    if (merge && connectable > 0) merge(connectable);
-    if (shifting > 0) {
-      enqueue_shift(b, primary, shifting);
-      b.counters.read();
-      const cl_uint offset_rays = b.counters[GPT_COUNTER_OFFSET_RAYS];
-      const cl_uint reconnects = b.counters[GPT_COUNTER_RECONNECT_RAYS];
-      walk_offsets(b, p, b.counters[GPT_COUNTER_MANIFOLD_WALKS]);
-      intersect_offsets(b, offset_rays, reconnects, false);
-    }
-    b.active = next;
-    b.cur = 1 - b.cur;
-  }
+  b.active = p.path.pixel_count;
+  b.cur = b.depth = 0;
+  b.phase = b.active > 0 ? Batch::Phase::kGenerating : Batch::Phase::kDone;
+  if (b.active == 0) return;
+  QueueScope scope(in_.context, b.command_queue);
+  b.counters.reset();
+  generate_
+      .args(in_.device_scene.camera(), p, b.base_queues.rays[0], b.offset_rays, b.bases, b.offsets, chains_, acc_,
+            b.counters.buffer(), primary)
+      .run(b.active);
 }
 
-void GradientGroups::step(Batch& b, const PrimarySamples& primary, AuxLayers* aux) {
+void GradientGroups::step(Batch& b, const PrimarySamples& primary, AuxLayers* aux, const GroupLightSubpaths* light,
+                          const RecordsStep& merge) {
   QueueScope scope(in_.context, b.command_queue);
   b.counters.read();  // waits for what the batch's device was running
   switch (b.phase) {
     case Batch::Phase::kGenerating:
       intersect(in_.embree, b.base_queues.rays[0], b.active, true, "camera");
       if (aux) aux->add(b.params.path, b.base_queues.rays[0], b.active, in_.device_scene);
-      intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], 0, true);
+      intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], 0, true);  // camera rays of the neighbour pixels
+      b.next = b.active;
       break;
     case Batch::Phase::kShading: {
       b.next = b.counters[GPT_COUNTER_BASE_RAYS];
+      const cl_uint connectable = b.counters[GPT_COUNTER_CONNECTABLE];
       const cl_uint shifting = b.counters[GPT_COUNTER_SHIFT_GROUPS];
       intersect(in_.embree, b.base_queues.rays[1 - b.cur], b.next, false, "bounce");
       add_shadows(b, b.counters[GPT_COUNTER_SHADOW_RAYS], "shadow", b.depth == 0);
+      if (light && connectable > 0) connect(b, b.depth + 1, connectable, *light);
+      if (merge && connectable > 0) merge(connectable);
       if (shifting > 0) {
-        enqueue_shift(b, primary, shifting);
+        b.counters.reset();
+        shift_
+            .args(b.params, shifting, b.shift_groups, b.base_queues.rays[1 - b.cur], b.offset_rays, b.reconnect_rays,
+                  b.bases, b.offsets, chains_, walks_, b.counters.buffer(), primary, in_.device_scene)
+            .run(shifting);
         b.phase = Batch::Phase::kShifting;
         return;
       }
+      b.cur = 1 - b.cur;
+      ++b.depth;
       break;
     }
-    case Batch::Phase::kShifting:
-      intersect_offsets(b, b.counters[GPT_COUNTER_OFFSET_RAYS], b.counters[GPT_COUNTER_RECONNECT_RAYS], false);
+    case Batch::Phase::kShifting: {
+      const cl_uint offset_rays = b.counters[GPT_COUNTER_OFFSET_RAYS];
+      const cl_uint reconnects = b.counters[GPT_COUNTER_RECONNECT_RAYS];
+      walk_offsets(b, b.counters[GPT_COUNTER_MANIFOLD_WALKS]);
+      intersect_offsets(b, offset_rays, reconnects, false);
+      b.cur = 1 - b.cur;
+      ++b.depth;
       break;
+    }
     case Batch::Phase::kDone: return;
   }
-  if (b.phase != Batch::Phase::kGenerating) {
-    b.active = b.next;
-    b.cur = 1 - b.cur;
-    ++b.depth;
-  }
+  b.active = b.next;
   if (b.active == 0) {
     b.phase = Batch::Phase::kDone;
     return;
   }
-  enqueue_shade(b, primary);
+  shade(b, primary);
   b.phase = Batch::Phase::kShading;
 }
 
 void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
                            const GroupLightSubpaths* light, const RecordsStep& merge) {
-  if (batches_.size() == 1) {
-    trace_batch(batches_[0], p, primary, aux, light, merge);
-    return;
-  }
   // Consecutive path ranges, one a batch: every path's accumulators are written by one batch.
   const cl_uint count = p.path.pixel_count, per = (count + cl_uint(batches_.size()) - 1) / cl_uint(batches_.size());
-  cl_uint start = 0;
+  cl_uint first = 0;
   for (Batch& b : batches_) {
-    b.params = p;
-    b.params.path.first_pixel = p.path.first_pixel + start;
-    b.params.path.pixel_count = b.active = start < count ? std::min(per, count - start) : 0;
-    b.cur = b.depth = 0;
-    b.phase = b.active > 0 ? Batch::Phase::kGenerating : Batch::Phase::kDone;
-    start += per;
-    if (b.active == 0) continue;
-    QueueScope scope(in_.context, b.command_queue);
-    generate(b, b.params, primary);
+    GdrGptParams part = p;
+    part.path.first_pixel = p.path.first_pixel + first;
+    part.path.pixel_count = first < count ? std::min(per, count - first) : 0;
+    start(b, part, primary);
+    first += per;
   }
   for (bool busy = true; busy;) {
     busy = false;
     for (Batch& b : batches_) {
       if (b.phase == Batch::Phase::kDone) continue;
-      step(b, primary, aux);
+      step(b, primary, aux, light, merge);
       busy = true;
     }
   }
   // A batch's last shadows may still run on its queue: the pass's gather reads every path's sums.
-  in_.context.finish();
+  if (batches_.size() > 1) in_.context.finish();
 }
 
 void GradientGroups::report(Stats* stats) {

@@ -128,7 +128,7 @@ class GradientGroups {
     Buffer<cl_uint> connectable;        // and the groups that recorded one
     DeviceCounters counters;
     // Stepping: the batch's paths, what its device runs (`phase`), its `active` groups in base
-    // queue `cur`, and the base rays the last shade step queued (`next`).
+    // queue `cur` at `depth`, and the base rays the last shade step queued (`next`).
     enum class Phase { kGenerating, kShading, kShifting, kDone };
     GdrGptParams params{};
     Phase phase = Phase::kDone;
@@ -136,28 +136,25 @@ class GradientGroups {
     int cur = 0, depth = 0;
   };
 
-  // The bounce loop of one batch (every kind of group), waiting for each step's counters.
-  void trace_batch(Batch& b, const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
-                   const GroupLightSubpaths* light, const RecordsStep& merge);
+  // Queues the camera rays of batch b's paths p (its part of the chunk).
+  void start(Batch& b, const GdrGptParams& p, const PrimarySamples& primary);
   // One step of batch b: it waits for what its device was running, traces the rays that gave
-  // (Embree), and queues its next kernels without waiting.
-  void step(Batch& b, const PrimarySamples& primary, AuxLayers* aux);
-  void generate(Batch& b, const GdrGptParams& p, const PrimarySamples& primary);
-  // Queues the shade step of b's `active` groups in base queue `cur` (counters reset first; the
-  // material queues' routing reads their counts where it routes).
-  void enqueue_shade(Batch& b, const PrimarySamples& primary);
-  // Queues the shift step of the `shifting` groups the last shade step listed.
-  void enqueue_shift(Batch& b, const PrimarySamples& primary, cl_uint shifting);
+  // (Embree), runs the connections and merges of the groups that recorded a vertex, and queues
+  // its next kernels without waiting.
+  void step(Batch& b, const PrimarySamples& primary, AuxLayers* aux, const GroupLightSubpaths* light,
+            const RecordsStep& merge);
+  // Queues the shade step of b's `active` groups in base queue `cur`, by the material queues of
+  // the bases' hits (counters reset first; the queues' routing reads their counts where it routes).
+  void shade(Batch& b, const PrimarySamples& primary);
   // Offset rays' hits and reconnection segments' visibility, filed into the offsets' states.
   void intersect_offsets(Batch& b, cl_uint rays, cl_uint reconnects, bool coherent);
   // Solves the walks the shift step queued and joins their offsets to the base.
-  void walk_offsets(Batch& b, const GdrGptParams& p, cl_uint walks);
+  void walk_offsets(Batch& b, cl_uint walks);
   // The pending values behind the shadow rays written since the last reset, where unoccluded.
   void add_shadows(Batch& b, cl_uint count, const char* kind, bool coherent);
   // The recorded vertices (`connectable` of them, `camera_depth` segments from the camera) to
   // the light subpaths' stored vertices, one launch a vertex index.
-  void connect(Batch& b, const GdrGptParams& p, int camera_depth, cl_uint connectable,
-               const GroupLightSubpaths& light);
+  void connect(Batch& b, int camera_depth, cl_uint connectable, const GroupLightSubpaths& light);
 
   RenderInputs in_;
   GptSettings gpt_;
