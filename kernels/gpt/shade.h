@@ -425,7 +425,7 @@ __kernel void gpt_route(GdrGptParams params, uint count, __global const GdrRayHi
   if (path_no_segments(params.path.max_depth)) return;
   GptShadeAppend out;
   out.shadows = out.connectable = out.next = out.shift = 0u;
-  gpt_shade_group(params, q, 0, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,
+  gpt_shade_group(params, q, -1, base_in, bases, offsets, acc, pend, records, counter_shard(counters), &out,
                   PRIMARY_SAMPLE_NAMES, SCENE_DATA_NAMES);
 }
 
