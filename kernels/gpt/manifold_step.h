@@ -187,7 +187,8 @@ __kernel void gpt_manifold_join(GdrGptParams params, uint count, __global const 
       float3 f = bsdf_eval(&b, wal, wbl);
       float p = bsdf_pdf(&b, wal, wbl);
       float3 ba = normalize(bp[k] - bp[k + 1]), bb = normalize(bp[k + 2] - bp[k + 1]);
-      jac *= safe_div(chain_half_jacobian(&s, W.v[k].at, flags, ba, bb), chain_half_jacobian(&s, R.v[k], flags, wa, wb));
+      jac *= safe_div(chain_half_jacobian(&s, W.v[k].at, flags, ba, bb),
+                      chain_half_jacobian(&s, R.v[k], flags, wa, wb));
       if (!(p > 0.0f) || max3(f) <= 0.0f) {
         reason = GPT_COUNTER_FAIL_ZERO;
         break;

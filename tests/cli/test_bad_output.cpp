@@ -373,12 +373,15 @@ bool has_temporary(const TempDir& dir) {
 
 // While the outputs are being written (here: held up by a FIFO no one reads, with the images'
 // temporaries already there), the first interrupt lets the write go on and a second one ends the
-// process at once, removing the temporaries and leaving the old names alone.
+// process at once, removing the temporaries and leaving the old names alone. The temporaries are
+// awaited once the render has begun: at start the process creates and removes one for each output
+// (its check that the folders take new files), which a poll may see before any interrupt defers.
 TEST(BadOutput, SecondInterruptDuringTheWriteEndsAtOnceAndLeavesNoTemporary) {
   TempDir dir, logs;
   std::string log = logs.file("log.txt");
   ASSERT_EQ(mkfifo(dir.file("s.fifo").c_str(), 0644), 0);
-  Background run({kScene, "-D", "res=8", "--spp", "1", "-o", "out.exr", "--stats", "s.fifo"}, dir, log);
+  Background run({kScene, "-D", "res=8", "--spp", "1", "-o", "out.exr", "--stats", "s.fifo", "--verbose"}, dir, log);
+  ASSERT_TRUE(wait_for([&] { return contains(read_text(log), "rendering:"); }, 120)) << read_text(log);
   ASSERT_TRUE(wait_for([&] { return has_temporary(dir); }, 120)) << "no temporary appeared: " << join(listing(dir.path()))
                                                                 << " " << read_text(log);
   run.signal_it(SIGINT);
