@@ -99,8 +99,8 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
   // Batches step G-PT's own groups only: the others share their light subpaths' and merges'
   // buffers, and the manifold stage its walks'.
   const int wanted = gpt.batches > 0 ? gpt.batches : in.context.is_cpu() ? 1 : 2;
-  const int batches =
-      kind == GroupKind::kPaths && !manifold && wanted > 1 && capacity_ >= kMinBatchGroups * size_t(wanted) ? wanted : 1;
+  const bool splits = kind == GroupKind::kPaths && !manifold && capacity_ >= kMinBatchGroups * size_t(wanted);
+  const int batches = splits ? wanted : 1;
   const bool route = gpt.route_materials.value_or(!in.context.is_cpu());
   for (int i = 0; i < batches; ++i) {
     batches_.emplace_back(in, kernels_, program(), (capacity_ + size_t(batches) - 1) / size_t(batches), kind, route,
@@ -154,7 +154,8 @@ void GradientGroups::walk_offsets(Batch& b, cl_uint walks) {
   if (!manifold_ || walks == 0) return;
   manifold_->solve(walks_, walks, walk_results_, b.params.path);
   b.counters.reset();
-  join_->args(b.params, walks, walks_, walk_results_, chains_, b.offsets, b.counters.buffer(), in_.device_scene).run(walks);
+  join_->args(b.params, walks, walks_, walk_results_, chains_, b.offsets, b.counters.buffer(), in_.device_scene)
+      .run(walks);
   b.counters.read();
 }
 
