@@ -26,8 +26,7 @@ struct Rendered {
 };
 
 void render(const Scene& scene, bool bidirectional, bool routed, Rendered& out) {
-  Context ctx(select_device(""), &out.stats);
-  test::SceneOnDevice on_device(scene, &out.stats, ctx);
+  test::SceneOnCountingDevice on_device(scene, &out.stats);
   RenderSettings s;
   s.spp = 2;
   s.seed = 7;

@@ -27,8 +27,7 @@ TEST(PtBatches, TwoBatchesRenderTheImageOfOne) {
   uint64_t launches[2];
   for (int batches : {1, 2}) {
     Stats stats;
-    Context ctx(select_device(""), &stats);
-    test::SceneOnDevice on_device(scene, &stats, ctx);
+    test::SceneOnCountingDevice on_device(scene, &stats);
     PtSettings pt;
     pt.batches = batches;
     pt.aux = true;

@@ -23,15 +23,14 @@ namespace {
 void expect_queues_of(const std::string& file, int expected_types) {
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32);
   Stats stats;
-  Context ctx(select_device(""), &stats);
-  test::SceneOnDevice on_device(scene, &stats, ctx);
+  test::SceneOnCountingDevice on_device(scene, &stats);
   RenderSettings s;
   s.spp = 2;
   s.seed = 9;
   s.max_depth = 6;
   PathTracer(on_device.inputs(), PtSettings{}).render(s);
 
-  KernelFactory kernels(ctx, scene);
+  KernelFactory kernels(on_device.context, scene);
   int types = 0;
   uint64_t shaded = 0;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {

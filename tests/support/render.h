@@ -24,17 +24,27 @@ struct SceneOnDevice {
   DeviceScene device;
 };
 
-// The RGB image (interleaved) of `scene` rendered with `settings`. With `stats`, on a context of
-// its own that records into them: the kernels' counters (rejected non-finite samples, paths)
-// report to their context's stats, so the shared context would leave them unread.
+// SceneOnDevice on a context of its own that records into `stats`: the kernels' counters
+// (rejected non-finite samples, paths) and launches report to their context's stats, so the
+// shared context would leave them unread.
+struct SceneOnCountingDevice {
+  SceneOnCountingDevice(const Scene& s, Stats* stats)
+      : context(select_device(""), stats), on_device(s, stats, context) {}
+  RenderInputs inputs() { return on_device.inputs(); }
+
+  Context context;
+  SceneOnDevice on_device;
+};
+
+// The RGB image (interleaved) of `scene` rendered with `settings`; with `stats`, counted
+// (SceneOnCountingDevice).
 inline std::vector<float> render_pt(const Scene& scene, const RenderSettings& settings, Stats* stats = nullptr,
                                     const PtSettings& pt = {}) {
   if (!stats) {
     SceneOnDevice on_device(scene);
     return PathTracer(on_device.inputs(), pt).render(settings).image.rgb_layer("");
   }
-  Context context(select_device(""), stats);
-  SceneOnDevice on_device(scene, stats, context);
+  SceneOnCountingDevice on_device(scene, stats);
   return PathTracer(on_device.inputs(), pt).render(settings).image.rgb_layer("");
 }
 

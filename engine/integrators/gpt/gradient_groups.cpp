@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/wavefront/batches.h"
 #include "render/wavefront/chunks.h"
 #include "util/log.h"
 
@@ -99,8 +100,7 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
   // Batches step G-PT's own groups only: the others share their light subpaths' and merges'
   // buffers, and the manifold stage its walks'.
   const int wanted = gpt.batches > 0 ? gpt.batches : in.context.is_cpu() ? 1 : 2;
-  const bool splits = kind == GroupKind::kPaths && !manifold && capacity_ >= kMinBatchGroups * size_t(wanted);
-  const int batches = splits ? wanted : 1;
+  const int batches = kind == GroupKind::kPaths && !manifold ? batch_count(capacity_, wanted, kMinBatchGroups) : 1;
   const bool route = gpt.route_materials.value_or(!in.context.is_cpu());
   for (int i = 0; i < batches; ++i) {
     batches_.emplace_back(in, kernels_, program(), (capacity_ + size_t(batches) - 1) / size_t(batches), kind, route,
@@ -249,24 +249,15 @@ void GradientGroups::step(Batch& b, const PrimarySamples& primary, AuxLayers* au
 
 void GradientGroups::trace(const GdrGptParams& p, const PrimarySamples& primary, AuxLayers* aux,
                            const GroupLightSubpaths* light, const RecordsStep& merge) {
-  // Consecutive path ranges, one a batch: every path's accumulators are written by one batch.
-  const cl_uint count = p.path.pixel_count, per = (count + cl_uint(batches_.size()) - 1) / cl_uint(batches_.size());
-  cl_uint first = 0;
-  for (Batch& b : batches_) {
+  for (size_t i = 0; i < batches_.size(); ++i) {
+    const BatchRange r = batch_range(p.path.first_pixel, p.path.pixel_count, batches_.size(), i);
     GdrGptParams part = p;
-    part.path.first_pixel = p.path.first_pixel + first;
-    part.path.pixel_count = first < count ? std::min(per, count - first) : 0;
-    start(b, part, primary);
-    first += per;
+    part.path.first_pixel = r.first;
+    part.path.pixel_count = r.count;
+    start(batches_[i], part, primary);
   }
-  for (bool busy = true; busy;) {
-    busy = false;
-    for (Batch& b : batches_) {
-      if (b.phase == Batch::Phase::kDone) continue;
-      step(b, primary, aux, light, merge);
-      busy = true;
-    }
-  }
+  step_in_turn(batches_, [](const Batch& b) { return b.phase == Batch::Phase::kDone; },
+               [&](Batch& b) { step(b, primary, aux, light, merge); });
   // A batch's last shadows may still run on its queue: the pass's gather reads every path's sums.
   if (batches_.size() > 1) in_.context.finish();
 }

@@ -85,7 +85,6 @@ class GradientGroups {
 
   const KernelFactory& kernels() const { return kernels_; }
   size_t capacity() const { return capacity_; }
-  size_t batches() const { return batches_.size(); }
   Buffer<Vec4>& acc() { return acc_; }
   // The base paths' states after a trace (a group's path.depth: the depth it ended at); one batch.
   const Buffer<GptBaseState>& bases() const { return batches_[0].bases; }

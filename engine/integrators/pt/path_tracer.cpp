@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/radiance_render.h"
+#include "render/wavefront/batches.h"
 #include "render/wavefront/chunks.h"
 #include "util/error.h"
 
@@ -47,7 +48,7 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       shadow_(kernels_.make(kProgram, "path_shadow_add")),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
-  const int batches = capacity_ < kMinBatchPaths * size_t(pt_.batches) ? 1 : pt_.batches;
+  const int batches = batch_count(capacity_, pt_.batches, kMinBatchPaths);
   for (int i = 0; i < batches; ++i) {
     batches_.emplace_back(in, kernels_, (capacity_ + size_t(batches) - 1) / size_t(batches), i % Context::kQueues);
   }
@@ -125,27 +126,19 @@ void PathTracer::step(Batch& b) {
 }
 
 void PathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first, uint32_t count) {
-  // Consecutive pixel ranges, one a batch: every pixel's film entry is written by one batch.
-  const uint32_t per = (count + uint32_t(batches_.size()) - 1) / uint32_t(batches_.size());
-  for (uint32_t i = 0, start = first; i < batches_.size(); ++i, start += per) {
+  for (size_t i = 0; i < batches_.size(); ++i) {
     Batch& b = batches_[i];
-    const uint32_t n = start < first + count ? std::min(per, first + count - start) : 0;
-    b.params = params(settings, sample, start, n);
-    b.active = n;
+    const BatchRange r = batch_range(first, count, batches_.size(), i);
+    b.params = params(settings, sample, r.first, r.count);
+    b.active = r.count;
     b.cur = b.depth = 0;
     b.shading = false;
-    if (n == 0) continue;
+    if (r.count == 0) continue;
     QueueScope scope(in_.context, b.command_queue);
     generate(b, b.params);
   }
-  for (bool busy = true; busy;) {
-    busy = false;
-    for (Batch& b : batches_) {
-      if (b.active == 0 && !b.shading) continue;
-      step(b);
-      busy = true;
-    }
-  }
+  step_in_turn(batches_, [](const Batch& b) { return b.active == 0 && !b.shading; },
+               [&](Batch& b) { step(b); });
   for (Batch& b : batches_) b.counters.report(in_.context.stats());
 }
 
