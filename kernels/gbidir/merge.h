@@ -2,8 +2,10 @@
 // recorded by the shade step: gbidir/camera_vertex.h) the photons within the radius make pm's
 // density estimate for the base, and each offset's estimate at its own visible point comes from
 // the same photons shifted (gbidir/photon_shift.h). Three launches over the recorded groups:
-//   gpm_count        the photons each base merges with, where an offset can take them shifted
-//                    (the host scans the counts into starts);
+//   gpm_count        the photons each base merges with (the first GPM_LISTED of them listed for
+//                    the later launches, which then need not walk the grid again), and their
+//                    number where an offset can take them shifted (the host scans these counts
+//                    into starts);
 //   gpm_shift_rays   for each of them and each offset, the ray that finds the offset photon
 //                    (rays[4 (start + i) + k]), or a ray Embree skips where the shift is refused;
 //   gpm_merge        after Embree: base and offset values under the pair weight
@@ -24,7 +26,7 @@
 //                     the base photon, which Embree checks: the reverse shift's ray from there
 //                     must find the base photon (the reference's visibility check), else the
 //                     shift is not invertible.
-// All of them walk the photons in the same order (bidir/photon_query.h). A slice of the groups at a
+// All of them take the photons in the same order (bidir/photon_query.h). A slice of the groups at a
 // time: [first, first + count) of `connectable`, its rays from starts[first] on (rays past the
 // buffer's capacity are not traced: their shifts fail).
 #pragma once
@@ -83,34 +85,73 @@ inline int gpm_path_allowed(int max_depth, int light_depth, int camera_depth) {
   return max_depth < 0 || light_depth + camera_depth <= max_depth;
 }
 
+// The photons group q merges with, in the grid's order: gpm_count's list (lists[q * GPM_LISTED +
+// i], listed[q] of them), or, where it holds more than the list, the grid walked again with
+// gpm_count's filter (the same photons in the same order). p: the base's vertex, of depth `depth`.
+typedef struct MergePhotons {
+  PhotonQuery pq;
+  __global const uint* list;
+  uint n, i;
+  int max_depth, depth;
+} MergePhotons;
+
+inline MergePhotons merge_photons(uint q, __global const uint* lists, __global const uint* listed, float3 p,
+                                  float radius, uint buckets, int max_depth, int depth) {
+  MergePhotons m;
+  m.list = lists + (size_t)q * GPM_LISTED;
+  m.n = listed[q];
+  m.i = 0u;
+  m.max_depth = max_depth;
+  m.depth = depth;
+  if (m.n > GPM_LISTED) m.pq = photon_query(p, radius, buckets);
+  return m;
+}
+
+inline int merge_photons_next(MergePhotons* m, __global const uint* starts, __global const uint* sorted,
+                              __global const float4* points, __global const GdrBidirVertex* store, uint* entry) {
+  if (m->n <= GPM_LISTED) {
+    if (m->i >= m->n) return 0;
+    *entry = m->list[m->i++];
+    return 1;
+  }
+  while (photon_query_next(&m->pq, starts, sorted, points, entry)) {
+    if (gpm_path_allowed(m->max_depth, store[*entry].depth, m->depth)) return 1;
+  }
+  return 0;
+}
+
 __kernel void gpm_count(GdrGptParams params, GdrBidirOptions opts, uint count, __global const uint* connectable,
                         __global const GbdptCameraVertex* records, __global const GdrBidirVertex* store,
                         __global const float4* points, __global const uint* starts, __global const uint* sorted,
-                        uint buckets, __global uint* counts, SCENE_DATA_ARGS) {
+                        uint buckets, __global uint* counts, __global uint* lists, __global uint* listed,
+                        SCENE_DATA_ARGS) {
   uint q = get_global_id(0);
   if (q == 0) counts[count] = 0;  // the scan's total lands there
   if (q >= count) return;
-  // Rays only for the groups with an offset at a merge point of its own: the others' offsets merge
-  // the base's photons or none.
   GbdptCameraVertex rec = records[connectable[q]];
-  int shifting = 0;
-  for (int k = 0; k < GPT_OFFSETS; ++k) shifting |= merge_own_point(rec.state[k]);
-  counts[q] = 0;
-  if (!shifting) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
   GdrBidirVertex z = rec.base;
   PhotonQuery pq = photon_query(surface_at(&s, z.prim, z.u, z.v).p, opts.radius, buckets);
+  __global uint* list = lists + (size_t)q * GPM_LISTED;
   uint n = 0, e;
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
-    n += gpm_path_allowed(params.path.max_depth, store[e].depth, z.depth) ? 1u : 0u;
+    if (!gpm_path_allowed(params.path.max_depth, store[e].depth, z.depth)) continue;
+    if (n < GPM_LISTED) list[n] = e;
+    ++n;
   }
-  counts[q] = n;
+  listed[q] = n;
+  // Rays only for the groups with an offset at a merge point of its own: the others' offsets merge
+  // the base's photons or none.
+  int shifting = 0;
+  for (int k = 0; k < GPT_OFFSETS; ++k) shifting |= merge_own_point(rec.state[k]);
+  counts[q] = shifting ? n : 0u;
 }
 
 __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint first, uint count,
                              __global const uint* connectable, __global const GbdptCameraVertex* records,
                              __global const GdrBidirVertex* store, __global const float4* points,
                              __global const uint* starts, __global const uint* sorted, uint buckets,
+                             __global const uint* lists, __global const uint* listed,
                              __global const GdrLightOrigin* origins, __global const GdrManifoldPoint* delta_points,
                              uint delta_depths, uint stride, __global const uint* ray_starts,
                              __global GdrRayHit* rays, uint ray_capacity, SCENE_DATA_ARGS) {
@@ -128,10 +169,10 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   }
   if (!shifting) return;  // no rays counted for the group (gpm_count)
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
-  PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
-  while (photon_query_next(&pq, starts, sorted, points, &e)) {
+  MergePhotons mp =
+      merge_photons(q, lists, listed, sx.p, opts.radius, buckets, params.path.max_depth, rec.base.depth);
+  while (merge_photons_next(&mp, starts, sorted, points, store, &e)) {
     GdrBidirVertex y = store[e];
-    if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
     PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
     int chained = 0;
 #if defined(GPM_PHOTON_WALKS)
@@ -163,6 +204,7 @@ __kernel void gpm_photon_walks(GdrGptParams params, GdrBidirOptions opts, uint f
                                __global const uint* connectable, __global const GbdptCameraVertex* records,
                                __global const GdrBidirVertex* store, __global const float4* points,
                                __global const uint* starts, __global const uint* sorted, uint buckets,
+                               __global const uint* lists, __global const uint* listed,
                                __global const GdrLightOrigin* origins, __global const GdrManifoldPoint* delta_points,
                                uint delta_depths, uint stride, __global const uint* ray_starts,
                                __global const GdrRayHit* rays, uint ray_capacity, __global uint* walk_of,
@@ -181,10 +223,10 @@ __kernel void gpm_photon_walks(GdrGptParams params, GdrBidirOptions opts, uint f
   if (!shifting) return;
   float r2 = opts.radius * opts.radius;
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
-  PhotonQuery pq = photon_query(surface_at(&s, rec.base.prim, rec.base.u, rec.base.v).p, opts.radius, buckets);
-  while (photon_query_next(&pq, starts, sorted, points, &e)) {
+  MergePhotons mp = merge_photons(q, lists, listed, surface_at(&s, rec.base.prim, rec.base.u, rec.base.v).p,
+                                  opts.radius, buckets, params.path.max_depth, rec.base.depth);
+  while (merge_photons_next(&mp, starts, sorted, points, store, &e)) {
     GdrBidirVertex y = store[e];
-    if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
     PhotonChain ch;
     int reason;
     if (photon_parent(&s, store, origins, stride, e, &y).kind != GPM_PARENT_NONE ||
@@ -231,7 +273,8 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
                         __global const uint* connectable, __global const GbdptCameraVertex* records,
                         __global const GptBaseState* bases, __global const GdrBidirVertex* store,
                         __global const float4* points, __global const uint* starts, __global const uint* sorted,
-                        uint buckets, __global const GdrLightOrigin* origins,
+                        uint buckets, __global const uint* lists, __global const uint* listed,
+                        __global const GdrLightOrigin* origins,
                         __global const GdrManifoldPoint* delta_points, uint delta_depths, uint stride,
                         __global const uint* ray_starts, __global const GdrRayHit* rays, uint ray_capacity,
                         __global const uint* walk_of, __global const GdrManifoldWalk* walks,
@@ -289,10 +332,10 @@ __kernel void gpm_merge(GdrGptParams params, GdrBidirOptions opts, uint first, u
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e, merged = 0, orphans = 0, lost = 0, walked = 0, unwalked = 0,
        long_chains = 0, irreversible = 0;
   float r2 = opts.radius * opts.radius;
-  PhotonQuery pq = photon_query(sx.p, opts.radius, buckets);
-  while (photon_query_next(&pq, starts, sorted, points, &e)) {
+  MergePhotons mp =
+      merge_photons(q, lists, listed, sx.p, opts.radius, buckets, params.path.max_depth, rec.base.depth);
+  while (merge_photons_next(&mp, starts, sorted, points, store, &e)) {
     GdrBidirVertex y = store[e];
-    if (!gpm_path_allowed(params.path.max_depth, y.depth, rec.base.depth)) continue;
     uint r0 = r;
     r += GPT_OFFSETS;
     float3 phi = vload3(0, y.throughput), wi = vload3(0, y.wo);

@@ -18,6 +18,11 @@
 #define GBDPT_LT_LAYERS GPT_ACC_COUNT
 #define GBDPT_LT_UNSHIFTED (-1.0f)
 
+// The photons a recorded vertex merges with that gpm_count lists for the later merge launches
+// (gbidir/merge.h); a vertex with more walks the grid again. On the caustics box at 256 px a vertex
+// merges with about two.
+#define GPM_LISTED 8
+
 // What a photon's parent is (the vertex its light subpath reached it from; gbidir/photon_shift.h).
 #define GPM_PARENT_NONE 0      // a delta vertex: no reconnection
 #define GPM_PARENT_SURFACE 1   // a rough vertex of the light subpath, stored just before the photon

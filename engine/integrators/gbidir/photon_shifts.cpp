@@ -24,6 +24,8 @@ PhotonShifts::PhotonShifts(const RenderInputs& in, const GradientGroups& groups,
       merge_(groups.kernels().make(groups.program(), "gpm_merge")),
       primitives_(in.context),
       starts_(in.context, groups.capacity() + 1),
+      lists_(in.context, groups.capacity() * GPM_LISTED),
+      listed_(in.context, groups.capacity()),
       shift_rays_(in.context, max_rays_, ray_queue_flags(in.context)),
       walk_of_(in.context, walks ? max_rays_ : 1),
       walks_(in.context, walks ? max_rays_ : 1),
@@ -45,16 +47,16 @@ void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, 
   if (shifted > 0) {
     rays_
         .args(p, o, first, count, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted,
-              g.buckets, g.origins, g.delta_points, g.delta_depths, g.stride, starts_, shift_rays_, capacity,
-              in_.device_scene)
+              g.buckets, lists_, listed_, g.origins, g.delta_points, g.delta_depths, g.stride, starts_, shift_rays_,
+              capacity, in_.device_scene)
         .run(count);
     intersect(in_.embree, shift_rays_, std::min(max_rays_, shifted * GPT_OFFSETS), false, "photon_shift");
     if (manifold_) {
       groups.counters().reset();
       walk_kernel_
           ->args(p, o, first, count, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted,
-                 g.buckets, g.origins, g.delta_points, g.delta_depths, g.stride, starts_, shift_rays_, capacity,
-                 walk_of_, walks_, groups.counters().buffer(), in_.device_scene)
+                 g.buckets, lists_, listed_, g.origins, g.delta_points, g.delta_depths, g.stride, starts_,
+                 shift_rays_, capacity, walk_of_, walks_, groups.counters().buffer(), in_.device_scene)
           .run(count);
       groups.counters().read();
       const cl_uint walks = groups.counters()[GPT_COUNTER_MANIFOLD_WALKS];
@@ -68,9 +70,9 @@ void PhotonShifts::merge_slice(const GdrGptParams& p, const GdrBidirOptions& o, 
   groups.counters().reset();
   merge_
       .args(p, o, first, count, groups.connectable(), groups.records(), groups.bases(), g.store, g.points, g.starts,
-            g.sorted, g.buckets, g.origins, g.delta_points, g.delta_depths, g.stride, starts_, shift_rays_, capacity,
-            walk_of_, walks_, walk_results_, reverse_rays_, groups.acc(), groups.counters().buffer(),
-            in_.device_scene)
+            g.sorted, g.buckets, lists_, listed_, g.origins, g.delta_points, g.delta_depths, g.stride, starts_,
+            shift_rays_, capacity, walk_of_, walks_, walk_results_, reverse_rays_, groups.acc(),
+            groups.counters().buffer(), in_.device_scene)
       .run(count);
   groups.counters().read();
 }
@@ -81,7 +83,7 @@ void PhotonShifts::merge(const GdrGptParams& p, const GdrBidirOptions& o, cl_uin
   ScopedTimer timer(in_.context.stats(), "render/merge");
   count_
       .args(p, o, recorded, groups.connectable(), groups.records(), g.store, g.points, g.starts, g.sorted, g.buckets,
-            starts_, in_.device_scene)
+            starts_, lists_, listed_, in_.device_scene)
       .run(recorded);
   // The photons whose shifts need rays; the merges of the other groups need none.
   const cl_uint total = primitives_.exclusive_scan(starts_, size_t(recorded) + 1);

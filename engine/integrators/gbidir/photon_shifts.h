@@ -48,6 +48,7 @@ class PhotonShifts {
   Kernel count_, rays_, merge_;
   DevicePrimitives primitives_;
   Buffer<cl_uint> starts_;       // the recorded groups' first photon with rays, a scan of their counts
+  Buffer<cl_uint> lists_, listed_;  // each recorded group's photons (GPM_LISTED at most) and their number
   Buffer<GdrRayHit> shift_rays_;  // four a photon
   // The manifold photon shift: at most a walk a ray, each ray's walk (or GPM_NO_WALK).
   std::optional<Kernel> walk_kernel_, reverse_kernel_;
