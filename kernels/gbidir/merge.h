@@ -128,14 +128,13 @@ __kernel void gpm_count(GdrGptParams params, GdrBidirOptions opts, uint count, _
   uint q = get_global_id(0);
   if (q == 0) counts[count] = 0;  // the scan's total lands there
   if (q >= count) return;
-  GbdptCameraVertex rec = records[connectable[q]];
+  __global const GbdptCameraVertex* rec = &records[connectable[q]];
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
-  GdrBidirVertex z = rec.base;
-  PhotonQuery pq = photon_query(surface_at(&s, z.prim, z.u, z.v).p, opts.radius, buckets);
+  PhotonQuery pq = photon_query(surface_at(&s, rec->base.prim, rec->base.u, rec->base.v).p, opts.radius, buckets);
   __global uint* list = lists + (size_t)q * GPM_LISTED;
   uint n = 0, e;
   while (photon_query_next(&pq, starts, sorted, points, &e)) {
-    if (!gpm_path_allowed(params.path.max_depth, store[e].depth, z.depth)) continue;
+    if (!gpm_path_allowed(params.path.max_depth, store[e].depth, rec->base.depth)) continue;
     if (n < GPM_LISTED) list[n] = e;
     ++n;
   }
@@ -143,7 +142,7 @@ __kernel void gpm_count(GdrGptParams params, GdrBidirOptions opts, uint count, _
   // Rays only for the groups with an offset at a merge point of its own: the others' offsets merge
   // the base's photons or none.
   int shifting = 0;
-  for (int k = 0; k < GPT_OFFSETS; ++k) shifting |= merge_own_point(rec.state[k]);
+  for (int k = 0; k < GPT_OFFSETS; ++k) shifting |= merge_own_point(rec->state[k]);
   counts[q] = shifting ? n : 0u;
 }
 
@@ -158,19 +157,19 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
   uint q = first + get_global_id(0);
   if (q >= first + count) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
-  GbdptCameraVertex rec = records[connectable[q]];
-  Surface sx = surface_at(&s, rec.base.prim, rec.base.u, rec.base.v);
+  __global const GbdptCameraVertex* rec = &records[connectable[q]];
+  Surface sx = surface_at(&s, rec->base.prim, rec->base.u, rec->base.v);
   Surface so[GPT_OFFSETS];
   int shifting = 0;  // some offset can take a shifted photon
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    if (!merge_own_point(rec.state[k])) continue;
-    so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
+    if (!merge_own_point(rec->state[k])) continue;
+    so[k] = surface_at(&s, rec->offset[k].prim, rec->offset[k].u, rec->offset[k].v);
     shifting = 1;
   }
   if (!shifting) return;  // no rays counted for the group (gpm_count)
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
   MergePhotons mp =
-      merge_photons(q, lists, listed, sx.p, opts.radius, buckets, params.path.max_depth, rec.base.depth);
+      merge_photons(q, lists, listed, sx.p, opts.radius, buckets, params.path.max_depth, rec->base.depth);
   while (merge_photons_next(&mp, starts, sorted, points, store, &e)) {
     GdrBidirVertex y = store[e];
     PhotonParent pa = photon_parent(&s, store, origins, stride, e, &y);
@@ -183,7 +182,7 @@ __kernel void gpm_shift_rays(GdrGptParams params, GdrBidirOptions opts, uint fir
 #endif
     for (int k = 0; k < GPT_OFFSETS && r < ray_capacity; ++k, ++r) {
       float3 target;
-      if (merge_own_point(rec.state[k]) && (pa.kind != GPM_PARENT_NONE || chained) &&
+      if (merge_own_point(rec->state[k]) && (pa.kind != GPM_PARENT_NONE || chained) &&
           photon_shift_target(sx.p, sx.ns, so[k].p, so[k].ns, points[e].xyz, &target)) {
 #if defined(GPM_PHOTON_WALKS)
         if (chained) {
@@ -212,19 +211,19 @@ __kernel void gpm_photon_walks(GdrGptParams params, GdrBidirOptions opts, uint f
   uint q = first + get_global_id(0);
   if (q >= first + count) return;
   SceneData s = path_scene(&params.path, SCENE_DATA_NAMES);
-  GbdptCameraVertex rec = records[connectable[q]];
+  __global const GbdptCameraVertex* rec = &records[connectable[q]];
   Surface so[GPT_OFFSETS];
   int shifting = 0;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
-    if (!merge_own_point(rec.state[k])) continue;
-    so[k] = surface_at(&s, rec.offset[k].prim, rec.offset[k].u, rec.offset[k].v);
+    if (!merge_own_point(rec->state[k])) continue;
+    so[k] = surface_at(&s, rec->offset[k].prim, rec->offset[k].u, rec->offset[k].v);
     shifting = 1;
   }
   if (!shifting) return;
   float r2 = opts.radius * opts.radius;
   uint r = 4u * (ray_starts[q] - ray_starts[first]), e;
-  MergePhotons mp = merge_photons(q, lists, listed, surface_at(&s, rec.base.prim, rec.base.u, rec.base.v).p,
-                                  opts.radius, buckets, params.path.max_depth, rec.base.depth);
+  MergePhotons mp = merge_photons(q, lists, listed, surface_at(&s, rec->base.prim, rec->base.u, rec->base.v).p,
+                                  opts.radius, buckets, params.path.max_depth, rec->base.depth);
   while (merge_photons_next(&mp, starts, sorted, points, store, &e)) {
     GdrBidirVertex y = store[e];
     PhotonChain ch;
@@ -237,7 +236,7 @@ __kernel void gpm_photon_walks(GdrGptParams params, GdrBidirOptions opts, uint f
     for (int k = 0; k < GPT_OFFSETS && r < ray_capacity; ++k, ++r) {
       uint w = GPM_NO_WALK;
       GdrRayHit h = rays[r];
-      if (merge_own_point(rec.state[k]) && h.hit.geomID != GDR_INVALID_ID) {
+      if (merge_own_point(rec->state[k]) && h.hit.geomID != GDR_INVALID_ID) {
         float3 o = (float3)(h.ray.org_x, h.ray.org_y, h.ray.org_z), d = (float3)(h.ray.dir_x, h.ray.dir_y, h.ray.dir_z);
         GdrManifoldPoint at = manifold_refine_hit(&s, h.hit.primID, o, d);
         float3 d2 = manifold_point_on(&s, at) - so[k].p;
