@@ -85,9 +85,20 @@ inline int gpm_path_allowed(int max_depth, int light_depth, int camera_depth) {
   return max_depth < 0 || light_depth + camera_depth <= max_depth;
 }
 
+// The next photon of query q whose path the depth bound allows (gpm_path_allowed): a camera
+// vertex `depth` segments from the camera merges it.
+inline int photon_query_next_allowed(PhotonQuery* q, __global const uint* starts, __global const uint* sorted,
+                                     __global const float4* points, __global const GdrBidirVertex* store,
+                                     int max_depth, int depth, uint* entry) {
+  while (photon_query_next(q, starts, sorted, points, entry)) {
+    if (gpm_path_allowed(max_depth, store[*entry].depth, depth)) return 1;
+  }
+  return 0;
+}
+
 // The photons group q merges with, in the grid's order: gpm_count's list (lists[q * GPM_LISTED +
-// i], listed[q] of them), or, where it holds more than the list, the grid walked again with
-// gpm_count's filter (the same photons in the same order). p: the base's vertex, of depth `depth`.
+// i], listed[q] of them), or, where it holds more than the list, the grid walked again as
+// gpm_count walks it (the same photons in the same order). p: the base's vertex, of depth `depth`.
 typedef struct MergePhotons {
   PhotonQuery pq;
   __global const uint* list;
@@ -114,10 +125,7 @@ inline int merge_photons_next(MergePhotons* m, __global const uint* starts, __gl
     *entry = m->list[m->i++];
     return 1;
   }
-  while (photon_query_next(&m->pq, starts, sorted, points, entry)) {
-    if (gpm_path_allowed(m->max_depth, store[*entry].depth, m->depth)) return 1;
-  }
-  return 0;
+  return photon_query_next_allowed(&m->pq, starts, sorted, points, store, m->max_depth, m->depth, entry);
 }
 
 __kernel void gpm_count(GdrGptParams params, GdrBidirOptions opts, uint count, __global const uint* connectable,
@@ -133,8 +141,7 @@ __kernel void gpm_count(GdrGptParams params, GdrBidirOptions opts, uint count, _
   PhotonQuery pq = photon_query(surface_at(&s, rec->base.prim, rec->base.u, rec->base.v).p, opts.radius, buckets);
   __global uint* list = lists + (size_t)q * GPM_LISTED;
   uint n = 0, e;
-  while (photon_query_next(&pq, starts, sorted, points, &e)) {
-    if (!gpm_path_allowed(params.path.max_depth, store[e].depth, rec->base.depth)) continue;
+  while (photon_query_next_allowed(&pq, starts, sorted, points, store, params.path.max_depth, rec->base.depth, &e)) {
     if (n < GPM_LISTED) list[n] = e;
     ++n;
   }

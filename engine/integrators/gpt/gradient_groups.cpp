@@ -103,7 +103,7 @@ GradientGroups::GradientGroups(const RenderInputs& in, const GptSettings& gpt, s
   const int batches = kind == GroupKind::kPaths && !manifold ? batch_count(capacity_, wanted, kMinBatchGroups) : 1;
   const bool route = gpt.route_materials.value_or(!in.context.is_cpu());
   for (int i = 0; i < batches; ++i) {
-    batches_.emplace_back(in, kernels_, program(), (capacity_ + size_t(batches) - 1) / size_t(batches), kind, route,
+    batches_.emplace_back(in, kernels_, program(), batch_capacity(capacity_, batches), kind, route,
                           i % Context::kQueues);
   }
   chains_ = Buffer<GptChain>(in.context, manifold ? capacity_ : 0);

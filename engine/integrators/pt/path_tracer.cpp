@@ -50,7 +50,7 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
   const int batches = batch_count(capacity_, pt_.batches, kMinBatchPaths);
   for (int i = 0; i < batches; ++i) {
-    batches_.emplace_back(in, kernels_, (capacity_ + size_t(batches) - 1) / size_t(batches), i % Context::kQueues);
+    batches_.emplace_back(in, kernels_, batch_capacity(capacity_, batches), i % Context::kQueues);
   }
   if (pt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
 }

@@ -15,6 +15,11 @@ inline int batch_count(size_t capacity, int wanted, size_t min_items) {
   return wanted > 1 && capacity >= min_items * size_t(wanted) ? wanted : 1;
 }
 
+// The items a batch holds at most: `capacity` split over `batches`.
+inline size_t batch_capacity(size_t capacity, int batches) {
+  return (capacity + size_t(batches) - 1) / size_t(batches);
+}
+
 // The items [first, first + count) of batch i of `batches` over the chunk's [chunk_first,
 // + chunk_count): consecutive ranges of ceil(chunk_count / batches); count 0 past the end.
 struct BatchRange {
