@@ -151,6 +151,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   params.back().option = app.add_flag("--aux")
                              ->description(integrators_reading("aux") + ": also write albedo, normal and depth layers (first hit)")
                              ->group("Integrator parameters");
+  param("--direct-samples", "direct_samples",
+        "camera rays a pixel and pass, besides the base paths', that estimate the emission seen directly (the "
+        "direct layer, which the gradients leave out): a primary ray each (default 0)")
+      ->check(CLI::Range(0, 64));
   param("--batches", "batches",
         "batches of paths (gpt: groups) a chunk, stepped in turn so that the device shades one while Embree "
         "traces the other: 1 | 2 (default: 2; gpt: 2 on a GPU, 1 on a CPU device)")

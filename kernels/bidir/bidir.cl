@@ -24,6 +24,7 @@
 #include "path/emission.h"
 #include "path/film.h"
 #include "path/scene.h"
+#include "path/seen_emission.h"
 #include "path/shadow.h"
 #include "path/spawn.h"
 #include "path/nee.h"
@@ -86,38 +87,6 @@ inline void bidir_continue(GdrBidirPathState* st, const GdrBidirOptions* o, cons
   out->next_p = su->p;
   out->next_ng = su->ng;
   out->next_wi = wi;
-}
-
-// Camera rays of pixels [first_pixel, first_pixel + pixel_count), for the emission seen directly.
-__kernel void lt_camera(__global const GdrCamera* camera, GdrPtParams params, __global GdrRayHit* rays) {
-  uint i = get_global_id(0);
-  if (i >= params.pixel_count) return;
-  GdrCamera cam = *camera;
-  CameraRay r = pixel_camera_ray(&cam, params.seed, params.first_pixel + i, params.sample);
-  write_camera_ray(&rays[i], &r, i);
-}
-
-// Adds what the camera rays' first hits emit toward the camera (area lights) or what their
-// escape direction sees (the environment).
-__kernel void lt_direct(GdrPtParams params, uint count, __global const GdrRayHit* rays, __global float4* film,
-                        __global uint* counters, SCENE_DATA_ARGS) {
-  uint i = get_global_id(0);
-  if (i >= count || !segments_allowed(params.max_depth, 1)) return;
-  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
-  __global uint* nonfinite = &counter_shard(counters)[BIDIR_COUNTER_NONFINITE];
-  GdrRayHit rh = rays[i];
-  uint pixel = params.first_pixel + rh.ray.id;
-  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
-  if (rh.hit.geomID == GDR_INVALID_ID) {
-#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
-    if (s.env_light >= 0) film_add(film, pixel, escaped_radiance(&s, dir), nonfinite);
-#endif
-    return;
-  }
-#if defined(GDR_LIGHT_AREA)
-  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
-  if (su.light >= 0) film_add(film, pixel, surface_radiance(&s, &su, -dir), nonfinite);
-#endif
 }
 
 // Light subpaths [first_pixel, first_pixel + pixel_count) of the pass leave their lights: the

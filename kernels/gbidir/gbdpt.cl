@@ -13,3 +13,4 @@
 #include "gpt/shift_step.h"
 #include "gradient/gather.h"
 #include "path/aux.h"
+#include "path/seen_emission.h"

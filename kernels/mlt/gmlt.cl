@@ -61,7 +61,8 @@ __kernel void gmlt_contribution(__global const GdrCamera* camera, GdrGptParams p
   float3 base[GPT_OFFSETS], off[GPT_OFFSETS], delta[GPT_OFFSETS];
   float2 at[GPT_OFFSETS];
   int inside[GPT_OFFSETS];
-  float3 primal = a[GPT_ACC_DIRECT].xyz * scale;
+  float3 direct = (a[GPT_ACC_DIRECT].xyz + a[GPT_ACC_SEEN].xyz) * scale;
+  float3 primal = direct;
   float target = 0.0f;
   for (int k = 0; k < GPT_OFFSETS; ++k) {
     base[k] = a[GPT_ACC_BASE(k)].xyz * scale;
@@ -87,5 +88,5 @@ __kernel void gmlt_contribution(__global const GdrCamera* camera, GdrGptParams p
   gmlt_record(records, layout.chains, c, GMLT_DY_FORWARD, x, delta[GPT_DIR_PY] * inv, valid && inside[GPT_DIR_PY]);
   gmlt_record(records, layout.chains, c, GMLT_DY_BACKWARD, at[GPT_DIR_NY], -delta[GPT_DIR_NY] * inv,
               valid && inside[GPT_DIR_NY]);
-  gmlt_record(records, layout.chains, c, GMLT_DIRECT, x, a[GPT_ACC_DIRECT].xyz * scale * inv, valid);
+  gmlt_record(records, layout.chains, c, GMLT_DIRECT, x, direct * inv, valid);
 }

@@ -11,12 +11,16 @@ typedef struct CameraRay {
   float tnear, tfar;
 } CameraRay;
 
-// Offset from the centre of pixel (x, y) (in pixels).
-inline float2 camera_jitter(const GdrCamera* cam, const PathSampler* ps, int x, int y) {
-  float4 u = sampler_block(ps, RNG_BLOCK_CAMERA);
+// Offset from the centre of pixel (x, y) (in pixels), drawn from the pixel filter with u.xy.
+inline float2 camera_filter_offset(const GdrCamera* cam, float4 u, int x, int y) {
   float2 rx = filter_range(cam, x, cam->width), ry = filter_range(cam, y, cam->height);
   return (float2)(sample_filter_axis(cam->filter, cam->filter_radius, rx, u.x),
                   sample_filter_axis(cam->filter, cam->filter_radius, ry, u.y));
+}
+
+// Offset from the centre of pixel (x, y) (in pixels), from the camera's random numbers.
+inline float2 camera_jitter(const GdrCamera* cam, const PathSampler* ps, int x, int y) {
+  return camera_filter_offset(cam, sampler_block(ps, RNG_BLOCK_CAMERA), x, y);
 }
 
 // The pixel shift: pixel (nx, ny) reuses the offset `jitter` of pixel (x, y). Returns the ratio

@@ -17,6 +17,9 @@
 #define RNG_BLOCK_EMISSION_DIR (RNG_LIGHT_SUBPATH + 1u)  // xy: direction
 #define RNG_BLOCK_SUBPATH_BSDF(depth) (RNG_LIGHT_SUBPATH + 2u + (uint)(depth))
 #define RNG_BLOCK_STRATEGY (RNG_LIGHT_SUBPATH - 1u)  // x: path length, y: strategy
+// The gradient-domain integrators' extra camera samples of their direct layer (sample j of a
+// pass: render/seen_emission.h) read blocks below the strategy block, which no camera path reaches.
+#define RNG_BLOCK_SEEN(j) (RNG_LIGHT_SUBPATH - 2u - (uint)(j))
 
 #define RNG_BLOCK_NOT_HELD 0xFFFFFFFFu
 

@@ -13,9 +13,9 @@
 #define GBDPT_OFFSET_GLOSSY 3  // at a vertex of its own, but the shift there is no reconnection: fails
 
 // The layers G-BDPT's light tracing adds a pixel during a pass (gbidir/light_tracing.h): the
-// accumulators' (GPT_ACC_BASE(k), GPT_ACC_OFFSET(k), and GPT_ACC_DIRECT for the paths it cannot
-// shift). A slot's first pair holds GBDPT_LT_UNSHIFTED as its R for those.
-#define GBDPT_LT_LAYERS GPT_ACC_COUNT
+// accumulators' (GPT_ACC_BASE(k), GPT_ACC_OFFSET(k), GPT_ACC_DIRECT for the paths it cannot shift,
+// and GPT_ACC_PRIMAL). A slot's first pair holds GBDPT_LT_UNSHIFTED as its R for those.
+#define GBDPT_LT_LAYERS (GPT_ACC_PRIMAL + 1)
 #define GBDPT_LT_UNSHIFTED (-1.0f)
 
 // The photons a recorded vertex merges with that gpm_count lists for the later merge launches

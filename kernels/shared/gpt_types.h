@@ -33,14 +33,18 @@ typedef struct GdrGptParams {
 } GdrGptParams;
 
 // Accumulators per group (float4 each): contributions of the base to the pair with neighbour k,
-// contributions of offset k, emission seen directly from the camera (kept out of gradients), and
-// G-BDPT's own primal under --primal power (GDR_GBDPT_POWER_PRIMAL: gbidir/weights.h; unused
-// elsewhere, where the primal is the pairs' mean).
+// contributions of offset k, the direct layer's paths other than the emission seen from the camera
+// (G-BDPT's light-traced paths it cannot shift), G-BDPT's own primal under --primal power
+// (GDR_GBDPT_POWER_PRIMAL: gbidir/weights.h; unused elsewhere, where the primal is the pairs'
+// mean; without the seen emission), and the emission seen directly from the camera, the base's and
+// that of the pass's extra camera samples (--direct-samples: render/seen_emission.h). The direct
+// layer and the seen emission are kept out of the gradients.
 #define GPT_ACC_BASE(k) (k)
 #define GPT_ACC_OFFSET(k) (4 + (k))
 #define GPT_ACC_DIRECT 8
 #define GPT_ACC_PRIMAL 9
-#define GPT_ACC_COUNT 10
+#define GPT_ACC_SEEN 10
+#define GPT_ACC_COUNT 11
 
 // Next-event contributions waiting for their shadow rays (float4 each, per group): the base's
 // share for pair k and joined offset k's (both behind the base's shadow ray), traced offset k's

@@ -38,3 +38,7 @@ typedef struct GdrPtParams {
   X(PT_COUNTER_SHADOW_RAYS, "")                     /* shadow rays written */              \
   X(PT_COUNTER_NONFINITE, "samples/nonfinite_rejected") /* NaN or Inf contributions dropped */
 enum { PT_COUNTERS(GDR_COUNTER_ENUM) PT_COUNTER_COUNT };
+
+// The counters of the emission seen by camera rays alone (path/seen_emission.h).
+#define SEEN_COUNTERS(X) X(SEEN_COUNTER_NONFINITE, "samples/nonfinite_rejected") /* NaN or Inf dropped */
+enum { SEEN_COUNTERS(GDR_COUNTER_ENUM) SEEN_COUNTER_COUNT };

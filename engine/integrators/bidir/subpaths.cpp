@@ -14,8 +14,7 @@ BidirSubpaths::BidirSubpaths(const RenderInputs& in, int technique, size_t capac
     : in_(in),
       technique_(technique),
       kernels_(in.context, in.scene),
-      lt_camera_(kernels_.make(kProgram, "lt_camera")),
-      lt_direct_(kernels_.make(kProgram, "lt_direct")),
+      direct_(in, kernels_, kProgram),
       emit_(kernels_.make(kProgram, "bidir_emit")),
       light_shade_(kernels_.make(kProgram, "bidir_light_shade")),
       camera_blocked_(kernels_.make(kProgram, "bidir_camera_blocked")),
@@ -85,15 +84,6 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
   }
 }
 
-void BidirSubpaths::trace_direct(const GdrPtParams& p, const BidirSink& sink, AuxLayers* aux) {
-  lt_camera_.args(in_.device_scene.camera(), p, queues_.rays[0]).run(p.pixel_count);
-  intersect(in_.embree, queues_.rays[0], p.pixel_count, true, "camera");
-  if (aux) aux->add(p, queues_.rays[0], p.pixel_count, in_.device_scene);
-  counters_.reset();
-  lt_direct_.args(p, p.pixel_count, queues_.rays[0], sink.values, counters_.buffer(), in_.device_scene)
-      .run(p.pixel_count);
-  counters_.read();
-}
 
 void BidirSubpaths::add_shadows(cl_uint count, const char* kind, Buffer<Vec4>& values) {
   if (count == 0) return;
@@ -194,7 +184,10 @@ void BidirSubpaths::trace(const GdrPtParams& p, const GdrBidirOptions& o, bool l
     if (merges() && stored_ > 0) build_grid(p);
     trace_camera_subpaths(p, sink, aux);
   } else {
-    if (p.max_depth != 0) trace_direct(p, sink, aux);
+    if (p.max_depth != 0) {
+      direct_.add(p, -1, queues_.rays[0], SeenFilm{sink.values}, aux);
+      direct_.read();
+    }
     if (light) trace_light_subpaths(p, sink);
   }
 }

@@ -17,6 +17,7 @@
 #include "render/aux_layers.h"
 #include "render/integrator.h"
 #include "render/primary_samples.h"
+#include "render/seen_emission.h"
 #include "render/splat_film.h"
 #include "render/wavefront/device_counters.h"
 #include "render/wavefront/kernel_factory.h"
@@ -85,7 +86,10 @@ class BidirSubpaths {
   int stored_bound() const { return stored_bound_; }
 
   // Adds the counters' totals to the stats.
-  void report(Stats* stats) { counters_.report(stats); }
+  void report(Stats* stats) {
+    counters_.report(stats);
+    direct_.report(stats);
+  }
 
  private:
   bool lt() const { return technique_ == BIDIR_LT; }
@@ -94,7 +98,6 @@ class BidirSubpaths {
   // A batch's options and primary samples; its store starts empty.
   void begin(const GdrBidirOptions& o, const PrimarySamples& primary);
   void trace_light_subpaths(const GdrPtParams& p, const BidirSink& sink);
-  void trace_direct(const GdrPtParams& p, const BidirSink& sink, AuxLayers* aux);
   void trace_camera_subpaths(const GdrPtParams& p, const BidirSink& sink, AuxLayers* aux);
   // The camera vertices of `camera_depth` segments queued in connectable_ to the store.
   void connect(const GdrPtParams& p, int camera_depth, cl_uint connectable, Buffer<Vec4>& values);
@@ -107,7 +110,8 @@ class BidirSubpaths {
   const RenderInputs in_;
   int technique_;
   KernelFactory kernels_;
-  Kernel lt_camera_, lt_direct_, emit_, light_shade_, camera_blocked_;
+  SeenEmission direct_;  // lt: the emission seen by camera rays
+  Kernel emit_, light_shade_, camera_blocked_;
   Kernel generate_, camera_shade_, connect_, shadow_add_, grid_keys_, merge_, splats_to_paths_;
   GdrBidirOptions options_{};  // this batch's
   PrimarySamples primary_;     // this batch's

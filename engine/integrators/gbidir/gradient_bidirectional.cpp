@@ -7,11 +7,12 @@ GdrBidirOptions gbdpt_light_options(bool power_sums) {
   return o;
 }
 
-const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
-                                               "manifold_tolerance", "manifold_precision", "primal"};
-const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
-                                              "manifold_tolerance", "manifold_precision", "radius",
-                                              "radius_alpha"};
+const std::vector<std::string> kGbdptParams = {"shift", "shift_threshold", "aux", "direct_samples",
+                                               "manifold_iterations", "manifold_tolerance", "manifold_precision",
+                                               "primal"};
+const std::vector<std::string> kGvcmParams = {"shift", "shift_threshold", "aux", "direct_samples",
+                                              "manifold_iterations", "manifold_tolerance", "manifold_precision",
+                                              "radius", "radius_alpha"};
 
 GptSettings gbdpt_settings(const IntegratorParams& params) {
   GptSettings s = gpt_settings(params);

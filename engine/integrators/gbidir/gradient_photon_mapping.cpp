@@ -2,8 +2,9 @@
 
 namespace gdr {
 
-const std::vector<std::string> kGpmParams = {"shift", "shift_threshold", "aux", "manifold_iterations",
-                                             "manifold_tolerance", "manifold_precision", "radius", "radius_alpha"};
+const std::vector<std::string> kGpmParams = {"shift", "shift_threshold", "aux", "direct_samples",
+                                             "manifold_iterations", "manifold_tolerance", "manifold_precision",
+                                             "radius", "radius_alpha"};
 
 GptSettings gpm_settings(const IntegratorParams& params) { return gpt_settings(params); }
 

@@ -32,6 +32,9 @@ struct GptSettings {
   int shift = GPT_SHIFT_HYBRID;  // GPT_SHIFT_*
   float shift_threshold = GDR_GLOSSY_THRESHOLD;
   bool aux = false;
+  // Camera samples a pixel and pass of the emission seen directly, besides the base path's own
+  // (render/seen_emission.h): the direct layer's mean over 1 + direct_samples.
+  int direct_samples = 0;
   bool power_primal = false;  // G-BDPT: the primal under the power heuristic (kernels/gbidir/weights.h)
   ManifoldSettings manifold;
   size_t in_flight = 0;  // groups a chunk at most (0: GradientGroups::chunk_capacity_for's)

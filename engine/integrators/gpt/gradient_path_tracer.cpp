@@ -2,16 +2,18 @@
 
 #include "render/progressive_loop.h"
 #include "render/wavefront/chunks.h"
+#include "render/wavefront/ray_queues.h"
 #include "util/error.h"
 
 namespace gdr {
 
-const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", "batches", "manifold_iterations",
-                                             "manifold_tolerance", "manifold_precision"};
+const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", "direct_samples", "batches",
+                                             "manifold_iterations", "manifold_tolerance", "manifold_precision"};
 
 GptSettings gpt_settings(const IntegratorParams& params) {
   GptSettings s = gpt_shift_settings(params);
   s.aux = params.flag("aux", false);
+  s.direct_samples = int(params.non_negative("direct_samples", 0.0f));
   if (params.has("batches")) s.batches = params.choice("batches", "2", {"1", "2"}) == "1" ? 1 : 2;
   return s;
 }
@@ -26,8 +28,25 @@ GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings
               size_t(in.scene.camera.width) * in.scene.camera.height, kind),
       params_(params),
       gather_(groups_.kernels().make(groups_.program(), "gpt_gather")),
-      film_(in.context, in.scene.camera.width, in.scene.camera.height) {
+      film_(in.context, in.scene.camera.width, in.scene.camera.height),
+      direct_samples_(gpt.direct_samples) {
   if (gpt.aux) aux_.emplace(in.context, groups_.kernels(), groups_.program(), film_.pixels());
+  if (direct_samples_ > 0) {
+    seen_.emplace(in, groups_.kernels(), groups_.program());
+    seen_rays_ = Buffer<GdrRayHit>(in.context, groups_.capacity(), ray_queue_flags(in.context));
+  }
+}
+
+void GradientPathTracer::add_seen_samples(const RenderSettings& settings, uint32_t sample) {
+  if (!seen_) return;
+  for_each_chunk(uint32_t(film_.pixels()), groups_.capacity(), [&](uint32_t first, uint32_t count) {
+    const GdrPtParams p = groups_.params(settings, sample, first, count).path;
+    for (int j = 0; j < direct_samples_; ++j) {
+      seen_->add(p, cl_int(j), seen_rays_, SeenFilm{groups_.acc(), GPT_ACC_COUNT, GPT_ACC_SEEN});
+    }
+  });
+  seen_->read();
+  seen_->report(in_.context.stats());
 }
 
 void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
@@ -50,7 +69,8 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
       trace_chunk(settings, uint32_t(sample), first, count);
     });
     end_pass();
-    gather_.args(w, h, groups_.acc(), film_.pass(sample)).run(pixels);
+    add_seen_samples(settings, uint32_t(sample));
+    gather_.args(w, h, groups_.acc(), 1.0f / float(1 + direct_samples_), film_.pass(sample)).run(pixels);
   });
   const double seconds = timer.elapsed();
   GradientImages out = film_.images(samples);

@@ -1,0 +1,48 @@
+// Emission seen directly by camera rays: one ray a pixel, and what its first hit emits toward the
+// camera (area lights) or what its escape direction sees (the environment), added to a film slot.
+// Light tracing's estimate of that emission, and the gradient-domain integrators' extra samples of
+// their direct layer (render/seen_emission.h). Ray i of a queue traces pixel
+// params.first_pixel + i.
+#pragma once
+#include "path/camera_sample.h"
+#include "path/emission.h"
+#include "path/film.h"
+#include "path/scene.h"
+#include "wavefront/counter_shard.h"
+
+// Camera rays of pixels [first_pixel, first_pixel + pixel_count), their filter offsets from the
+// camera's numbers of (seed, pixel, sample) (extra < 0) or extra sample `extra`'s (RNG_BLOCK_SEEN).
+__kernel void seen_camera(__global const GdrCamera* camera, GdrPtParams params, int extra,
+                          __global GdrRayHit* rays) {
+  uint i = get_global_id(0);
+  if (i >= params.pixel_count) return;
+  GdrCamera cam = *camera;
+  uint pixel = params.first_pixel + i;
+  PathSampler ps = path_sampler(params.seed, pixel, params.sample);
+  uint block = extra < 0 ? RNG_BLOCK_CAMERA : RNG_BLOCK_SEEN(extra);
+  int px = (int)(pixel % (uint)cam.width), py = (int)(pixel / (uint)cam.width);
+  CameraRay r = camera_sample(&cam, px, py, camera_filter_offset(&cam, sampler_block(&ps, block), px, py));
+  write_camera_ray(&rays[i], &r, i);
+}
+
+// The rays' emission into film[pixel * stride + slot] (SEEN_COUNTERS count what is dropped).
+__kernel void seen_emission(GdrPtParams params, uint count, __global const GdrRayHit* rays, __global float4* film,
+                            uint stride, uint slot, __global uint* counters, SCENE_DATA_ARGS) {
+  uint i = get_global_id(0);
+  if (i >= count) return;
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  __global uint* nonfinite = &counter_shard(counters)[SEEN_COUNTER_NONFINITE];
+  GdrRayHit rh = rays[i];
+  uint at = (params.first_pixel + rh.ray.id) * stride + slot;
+  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  if (rh.hit.geomID == GDR_INVALID_ID) {
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+    if (s.env_light >= 0) film_add(film, at, escaped_radiance(&s, dir), nonfinite);
+#endif
+    return;
+  }
+#if defined(GDR_LIGHT_AREA)
+  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+  if (su.light >= 0) film_add(film, at, surface_radiance(&s, &su, -dir), nonfinite);
+#endif
+}
