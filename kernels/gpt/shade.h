@@ -128,7 +128,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
       float p_env;
       float3 le = environment_eval(&s, dir, &p_env);
       if (direct) {
-        acc_add(acc, st->pixel, GPT_ACC_SEEN, checked(beta * le, nonfinite));
+        acc_add_seen(acc, st->pixel, checked(beta * le, nonfinite));
       } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
         float2 others_x = GPT_ESCAPED_EMISSION_OTHERS(&s, dir, &base.mis);
@@ -200,7 +200,7 @@ __attribute__((always_inline)) inline void gpt_shade_group(
   if (su.light >= 0 || !direct) {
     float3 le = su.light >= 0 ? surface_radiance(&s, &su, wo) : (float3)(0.0f);
     if (direct) {
-      acc_add(acc, st->pixel, GPT_ACC_SEEN, checked(beta * le, nonfinite));
+      acc_add_seen(acc, st->pixel, checked(beta * le, nonfinite));
     } else {
 #if defined(GDR_GBDPT) || defined(GDR_GPM)
       float2 others_x = GPT_SURFACE_EMISSION_OTHERS(&s, &su, wo, &base.mis);

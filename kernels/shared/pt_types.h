@@ -40,5 +40,7 @@ typedef struct GdrPtParams {
 enum { PT_COUNTERS(GDR_COUNTER_ENUM) PT_COUNTER_COUNT };
 
 // The counters of the emission seen by camera rays alone (path/seen_emission.h).
-#define SEEN_COUNTERS(X) X(SEEN_COUNTER_NONFINITE, "samples/nonfinite_rejected") /* NaN or Inf dropped */
+#define SEEN_COUNTERS(X)                                                              \
+  X(SEEN_COUNTER_NONFINITE, "samples/nonfinite_rejected") /* NaN or Inf dropped */ \
+  X(SEEN_COUNTER_LISTED, "")                              /* pixels listed for extra samples */
 enum { SEEN_COUNTERS(GDR_COUNTER_ENUM) SEEN_COUNTER_COUNT };

@@ -1,5 +1,6 @@
-// The direct layer's extra camera samples (--direct-samples, render/seen_emission.h) leave the
-// direct layer and the primal unbiased and cut the direct layer's variance by about 1 + K.
+// The direct layer's extra camera samples (--direct-samples, integrators/gpt/direct_samples.h:
+// every pixel in the first pass, then those near an emitter's edge) leave the direct layer and the
+// primal unbiased and cut the direct layer's variance by about 1 + K.
 //
 // The caustics box (its light seen from the camera), kWidth px, kSpp passes: kSeeds renders with
 // K = 0 (seeds 1..) and kSeeds with K = kExtra (seeds 1001..). Unbiased: Welch's t-test of equal
@@ -15,6 +16,7 @@
 #include "scene/load_scene.h"
 #include "support/render.h"
 #include "support/statistics.h"
+#include "support/agreement.h"
 
 namespace gdr {
 namespace {
@@ -97,6 +99,27 @@ TEST(GptDirectSamples, GvcmDirectLayerUnbiasedAndLessNoisy) {
   expect_unbiased_and_less_noisy("gvcm", [](const RenderInputs& in, const IntegratorParams& p) {
     return std::make_unique<GradientBidirectional>(in, gvcm_settings(p), p, gvcm_photon_settings(p));
   });
+}
+
+// After the first pass only the pixels near the light's edge take extra samples: the passes after
+// it list a small share of the image (the light covers about 1% of the caustics box's image).
+TEST(GptDirectSamples, AfterTheFirstPassOnlyNearEdges) {
+  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 64);
+  Stats stats;
+  test::SceneOnCountingDevice on_device(scene, &stats);
+  IntegratorParams params;
+  params.set("direct_samples", "2");
+  RenderSettings s;
+  s.spp = 5;
+  s.seed = 3;
+  s.max_depth = kMaxDepth;
+  GradientPathTracer(on_device.inputs(), gpt_settings(params), params).render_gradients(s);
+  const uint64_t pixels = uint64_t(scene.camera.width) * scene.camera.height;
+  const uint64_t rays = stats.count("kernel_items/seen_camera_listed");
+  ASSERT_GE(rays, 2 * pixels) << "the first pass takes extra samples everywhere";
+  const double later = double(rays - 2 * pixels) / (2.0 * (s.spp - 1));  // pixels a later pass
+  EXPECT_GT(later, 0.0) << "no pixel near the light's edge took extra samples";
+  EXPECT_LT(later, 0.1 * double(pixels)) << "extra samples beyond the light's edges";
 }
 
 TEST(GptDirectSamples, ParameterIsChecked) {

@@ -84,7 +84,6 @@ void BidirSubpaths::trace_light_subpaths(const GdrPtParams& p, const BidirSink& 
   }
 }
 
-
 void BidirSubpaths::add_shadows(cl_uint count, const char* kind, Buffer<Vec4>& values) {
   if (count == 0) return;
   occlude(in_.embree, shadow_rays_, count, kind);

@@ -2,7 +2,6 @@
 
 #include "render/progressive_loop.h"
 #include "render/wavefront/chunks.h"
-#include "render/wavefront/ray_queues.h"
 #include "util/error.h"
 
 namespace gdr {
@@ -29,24 +28,9 @@ GradientPathTracer::GradientPathTracer(const RenderInputs& in, const GptSettings
       params_(params),
       gather_(groups_.kernels().make(groups_.program(), "gpt_gather")),
       film_(in.context, in.scene.camera.width, in.scene.camera.height),
-      direct_samples_(gpt.direct_samples) {
+      direct_(in, groups_.kernels(), groups_.program(), gpt.direct_samples, film_.width(), film_.height(),
+              groups_.capacity()) {
   if (gpt.aux) aux_.emplace(in.context, groups_.kernels(), groups_.program(), film_.pixels());
-  if (direct_samples_ > 0) {
-    seen_.emplace(in, groups_.kernels(), groups_.program());
-    seen_rays_ = Buffer<GdrRayHit>(in.context, groups_.capacity(), ray_queue_flags(in.context));
-  }
-}
-
-void GradientPathTracer::add_seen_samples(const RenderSettings& settings, uint32_t sample) {
-  if (!seen_) return;
-  for_each_chunk(uint32_t(film_.pixels()), groups_.capacity(), [&](uint32_t first, uint32_t count) {
-    const GdrPtParams p = groups_.params(settings, sample, first, count).path;
-    for (int j = 0; j < direct_samples_; ++j) {
-      seen_->add(p, cl_int(j), seen_rays_, SeenFilm{groups_.acc(), GPT_ACC_COUNT, GPT_ACC_SEEN});
-    }
-  });
-  seen_->read();
-  seen_->report(in_.context.stats());
 }
 
 void GradientPathTracer::trace_chunk(const RenderSettings& settings, uint32_t sample, uint32_t first,
@@ -62,6 +46,7 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
   const uint32_t pixels = uint32_t(film_.pixels());
   film_.clear();
   if (aux_) aux_->clear();
+  direct_.clear();
   int samples = run_progressive(settings, [&](int sample) {
     // Launches queue without a wait each; the host waits where it reads (counters, Embree maps).
     DeferredTiming deferred(in_.context);
@@ -69,9 +54,11 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
       trace_chunk(settings, uint32_t(sample), first, count);
     });
     end_pass();
-    add_seen_samples(settings, uint32_t(sample));
-    gather_.args(w, h, groups_.acc(), 1.0f / float(1 + direct_samples_), film_.pass(sample)).run(pixels);
+    direct_.add(groups_.params(settings, uint32_t(sample), 0, pixels).path, groups_.acc());
+    gather_.args(w, h, groups_.acc(), cl_int(direct_.samples()), direct_.flags(), direct_.taking(), film_.pass(sample))
+        .run(pixels);
   });
+  direct_.report(stats);
   const double seconds = timer.elapsed();
   GradientImages out = film_.images(samples);
   out.seconds = seconds;

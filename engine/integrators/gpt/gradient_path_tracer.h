@@ -11,8 +11,9 @@
 //                    rejoin the base; render/manifold_walks.h has the walk's settings)
 //   shift_threshold  roughness at or below which a vertex is glossy, not reconnected (0.001)
 //   aux              true: also write the first hits' albedo, normal and depth layers
-//   direct_samples   extra camera rays a pixel and pass for the emission seen directly (0): the
-//                    direct layer, which the gradients leave out, at a primary ray a sample
+//   direct_samples   extra camera rays a pass for the emission seen directly (0), for each pixel
+//                    an emitter's edge crosses (integrators/gpt/direct_samples.h): the direct
+//                    layer, which the gradients leave out, at a primary ray a sample
 //   batches          1 or 2 batches of groups a chunk, stepped in turn for host/device overlap
 //                    (default: 2 on a GPU, 1 on a CPU device; GptSettings::batches)
 //   recon, recon_solver, alpha: the reconstruction (render/gradient_images.h)
@@ -24,7 +25,7 @@
 #include "render/gradient_film.h"
 #include "render/gradient_images.h"
 #include "render/integrator.h"
-#include "render/seen_emission.h"
+#include "integrators/gpt/direct_samples.h"
 
 namespace gdr {
 
@@ -53,17 +54,11 @@ class GradientPathTracer : public Integrator {
   GradientGroups groups_;    // acc: a pixel's groups' sums at the pixel (the gather reads neighbours)
 
  private:
-  // The pass's extra camera samples of the seen emission into groups_.acc() (--direct-samples).
-  void add_seen_samples(const RenderSettings& settings, uint32_t sample);
-
   IntegratorParams params_;  // the reconstruction's
   Kernel gather_;
   GradientFilm film_;
   std::optional<AuxLayers> aux_;
-  // --direct-samples: the extra camera samples of the seen emission, and their rays.
-  int direct_samples_;
-  std::optional<SeenEmission> seen_;
-  Buffer<GdrRayHit> seen_rays_;
+  DirectSamples direct_;  // --direct-samples
 };
 
 }  // namespace gdr
