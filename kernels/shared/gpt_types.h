@@ -36,9 +36,10 @@ typedef struct GdrGptParams {
 // contributions of offset k, the direct layer's paths other than the emission seen from the camera
 // (G-BDPT's light-traced paths it cannot shift), G-BDPT's own primal under --primal power
 // (GDR_GBDPT_POWER_PRIMAL: gbidir/weights.h; unused elsewhere, where the primal is the pairs'
-// mean; without the seen emission), and the emission seen directly from the camera, the base's and
-// that of the pass's extra camera samples (--direct-samples: render/seen_emission.h). The direct
-// layer and the seen emission are kept out of the gradients.
+// mean; without the seen emission), and the emission seen directly from the camera, the base's
+// and that of the pass's extra camera samples (--direct-samples: integrators/gpt/direct_samples.h;
+// w counts the samples that saw some). The direct layer and the seen emission stay out of the
+// gradients.
 #define GPT_ACC_BASE(k) (k)
 #define GPT_ACC_OFFSET(k) (4 + (k))
 #define GPT_ACC_DIRECT 8
