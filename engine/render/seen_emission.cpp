@@ -41,4 +41,9 @@ void SeenEmission::read() {
   counters_.reset();
 }
 
+void SeenEmission::report(Stats* stats) {
+  read();
+  counters_.report(stats);
+}
+
 }  // namespace gdr

@@ -35,10 +35,11 @@ class SeenEmission {
   // The same for the pixels list[first, first + count).
   void add_listed(const GdrPtParams& p, cl_int extra, const Buffer<cl_uint>& list, cl_uint first, cl_uint count,
                   Buffer<GdrRayHit>& rays, const SeenFilm& to);
-  // SEEN_COUNTERS (the kernels' `counters`); read() reads them (a wait) and zeroes them.
+  // SEEN_COUNTERS (the kernels' `counters`); read() reads them (a wait) and zeroes them, report()
+  // reads them and adds their totals to the stats.
   DeviceCounters& counters() { return counters_; }
   void read();
-  void report(Stats* stats) { counters_.report(stats); }
+  void report(Stats* stats);
 
  private:
   // The rays' hits, and their emission into `to` (ray i's pixel: p.first_pixel + its id).

@@ -65,6 +65,12 @@ inline float2 camera_primary_raster(const GdrCamera* cam, const PathSampler* ps)
   return region.xy + u.xy * region.zw;
 }
 
+// The ray through `pixel` (row-major) at its filter offset drawn with u.xy.
+inline CameraRay pixel_camera_ray_from(const GdrCamera* cam, uint pixel, float4 u) {
+  int px = (int)(pixel % (uint)cam->width), py = (int)(pixel / (uint)cam->width);
+  return camera_sample(cam, px, py, camera_filter_offset(cam, u, px, py));
+}
+
 // The camera ray of the path of `ps`: with primary-sample-space numbers through its own film
 // position, else through `pixel` (row-major) at its filter offset from the camera's numbers.
 inline CameraRay sampler_camera_ray(const GdrCamera* cam, const PathSampler* ps, uint pixel) {
@@ -74,8 +80,7 @@ inline CameraRay sampler_camera_ray(const GdrCamera* cam, const PathSampler* ps,
     camera_ray(cam, raster.x, raster.y, &r.o, &r.d, &r.tnear, &r.tfar);
     return r;
   }
-  int px = (int)(pixel % (uint)cam->width), py = (int)(pixel / (uint)cam->width);
-  return camera_sample(cam, px, py, camera_jitter(cam, ps, px, py));
+  return pixel_camera_ray_from(cam, pixel, sampler_block(ps, RNG_BLOCK_CAMERA));
 }
 
 // The camera ray of sample `sample` of `pixel` (row-major): its filter offset from the camera's

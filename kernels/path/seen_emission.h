@@ -1,8 +1,7 @@
 // Emission seen directly by camera rays: one ray a pixel, and what its first hit emits toward the
 // camera (area lights) or what its escape direction sees (the environment), added to a film slot.
 // Light tracing's estimate of that emission, and the gradient-domain integrators' extra samples of
-// their direct layer (render/seen_emission.h). Ray i of a queue traces pixel
-// params.first_pixel + i.
+// their direct layer (render/seen_emission.h). A ray's pixel is params.first_pixel + its id.
 #pragma once
 #include "path/camera_sample.h"
 #include "path/emission.h"
@@ -15,9 +14,7 @@
 inline void seen_camera_ray(const GdrCamera* cam, const GdrPtParams* params, int extra, uint pixel, uint id,
                             __global GdrRayHit* ray) {
   PathSampler ps = path_sampler(params->seed, pixel, params->sample);
-  uint block = extra < 0 ? RNG_BLOCK_CAMERA : RNG_BLOCK_SEEN(extra);
-  int px = (int)(pixel % (uint)cam->width), py = (int)(pixel / (uint)cam->width);
-  CameraRay r = camera_sample(cam, px, py, camera_filter_offset(cam, sampler_block(&ps, block), px, py));
+  CameraRay r = pixel_camera_ray_from(cam, pixel, sampler_block(&ps, extra < 0 ? RNG_BLOCK_CAMERA : RNG_BLOCK_SEEN(extra)));
   write_camera_ray(ray, &r, id);
 }
 

@@ -40,9 +40,7 @@ void DirectSamples::add(const GdrPtParams& p, Buffer<Vec4>& acc) {
 }
 
 void DirectSamples::report(Stats* stats) {
-  if (!seen_) return;
-  seen_->read();
-  seen_->report(stats);
+  if (seen_) seen_->report(stats);
 }
 
 }  // namespace gdr

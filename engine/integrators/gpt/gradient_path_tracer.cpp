@@ -54,7 +54,7 @@ GradientImages GradientPathTracer::render_gradients(const RenderSettings& settin
       trace_chunk(settings, uint32_t(sample), first, count);
     });
     end_pass();
-    direct_.add(groups_.params(settings, uint32_t(sample), 0, pixels).path, groups_.acc());
+    direct_.add(in_.device_scene.path_params(settings, uint32_t(sample), 0, pixels), groups_.acc());
     gather_.args(w, h, groups_.acc(), cl_int(direct_.samples()), direct_.flags(), direct_.taking(), film_.pass(sample))
         .run(pixels);
   });
