@@ -15,12 +15,14 @@ SeenEmission::SeenEmission(const RenderInputs& in, const KernelFactory& kernels,
 
 void SeenEmission::add(const GdrPtParams& p, cl_int extra, Buffer<GdrRayHit>& rays, const SeenFilm& to,
                        AuxLayers* aux) {
+  if (p.max_depth == 0) return;  // Mitsuba's max_depth 0 renders nothing, not even emitters seen
   camera_.args(in_.device_scene.camera(), p, extra, rays).run(p.pixel_count);
   trace(p, p.pixel_count, rays, to, aux);
 }
 
 void SeenEmission::add_listed(const GdrPtParams& p, cl_int extra, const Buffer<cl_uint>& list, cl_uint first,
                               cl_uint count, Buffer<GdrRayHit>& rays, const SeenFilm& to) {
+  if (p.max_depth == 0) return;
   camera_listed_.args(in_.device_scene.camera(), p, extra, list, first, count, rays).run(count);
   GdrPtParams by_id = p;  // a listed ray's id is its pixel
   by_id.first_pixel = 0;

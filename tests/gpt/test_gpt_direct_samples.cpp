@@ -130,5 +130,23 @@ TEST(GptDirectSamples, ParameterIsChecked) {
   EXPECT_EQ(gpt_settings(p).direct_samples, 5);
 }
 
+// max_depth 0 renders nothing (tests/pt/test_max_depth.cpp), the direct samples' emission too.
+TEST(GptDirectSamples, MaxDepthZeroStaysBlack) {
+  LoadOptions o;
+  o.defines = {{"res", "16"}};
+  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml", o);
+  test::SceneOnDevice on_device(scene);
+  IntegratorParams params;
+  params.set("direct_samples", "8");
+  params.set("recon", "none");
+  GradientPathTracer gpt(on_device.inputs(), gpt_settings(params), params);
+  RenderSettings s;
+  s.spp = 2;
+  s.max_depth = 0;
+  double sum = 0;
+  for (float v : gpt.render(s).image.rgb_layer("")) sum += v;
+  EXPECT_EQ(sum, 0.0);
+}
+
 }  // namespace
 }  // namespace gdr

@@ -183,7 +183,7 @@ void BidirSubpaths::trace(const GdrPtParams& p, const GdrBidirOptions& o, bool l
     if (merges() && stored_ > 0) build_grid(p);
     trace_camera_subpaths(p, sink, aux);
   } else {
-    if (p.max_depth != 0) direct_.add(p, -1, queues_.rays[0], SeenFilm{sink.values}, aux);
+    direct_.add(p, -1, queues_.rays[0], SeenFilm{sink.values}, aux);
     if (light) trace_light_subpaths(p, sink);
   }
 }
