@@ -28,7 +28,7 @@ TEST_P(ProjectScene, LoadsWithoutWarnings) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ProjectScene,
                          testing::Values("cornell-box.xml", "cornell-box-caustics.xml", "glossy-plates.xml",
-                                         "glass-box.xml", "environment.xml"));
+                                         "glass-box.xml", "glossy-glass-box.xml", "environment.xml"));
 
 TEST(ProjectScenes, CornellBoxIsDiffuseWithAreaLight) {
   Scene s = load_project_scene("cornell-box.xml");
@@ -89,6 +89,23 @@ TEST(ProjectScenes, GlossyPlatesAreNearDeltaOnlyBelowThreshold) {
   options.glossy_threshold = 0.001f;
   s = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/glossy-plates.xml", options);
   EXPECT_FALSE(s.features.specular_chains());
+}
+
+// The two glass boxes share the room, the camera and the slabs (scenes/fragments/glass-box-*.xml)
+// and differ in the sphere alone: diffuse in one, glossy plastic in the other.
+TEST(ProjectScenes, GlassBoxesDifferInTheSphereAlone) {
+  Scene diffuse = load_project_scene("glass-box.xml");
+  Scene glossy = load_project_scene("glossy-glass-box.xml");
+  EXPECT_EQ(diffuse.triangles.size(), glossy.triangles.size());
+  EXPECT_EQ(diffuse.lights.size(), glossy.lights.size());
+  EXPECT_EQ(diffuse.camera.width, glossy.camera.width);
+  EXPECT_TRUE(diffuse.features.specular_chains());
+  EXPECT_TRUE(glossy.features.specular_chains());
+  EXPECT_FALSE(diffuse.features.bsdf[BSDF_ROUGH_PLASTIC]);
+  EXPECT_TRUE(glossy.features.bsdf[BSDF_ROUGH_PLASTIC]);
+  for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
+    if (t != BSDF_ROUGH_PLASTIC) EXPECT_EQ(diffuse.features.bsdf[t], glossy.features.bsdf[t]) << bsdf_type_name(t);
+  }
 }
 
 TEST(ProjectScenes, EnvironmentSceneHasDistantLights) {
