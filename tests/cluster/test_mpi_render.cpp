@@ -42,9 +42,13 @@ nlohmann::json read_json(const std::string& path) {
 // differ by at most 2 (n - 1) u sum|x_i| (u = 2^-24); a layer's per-pixel mean then differs by
 // at most 2 (n - 1) u times the mean of |x|, which for the non-negative layers is the value
 // itself and for the signed ones (gradients, normals) is bounded by the layer's mean magnitude.
-// The variance layers join float Welford sums (one process) or combine them in double (several),
-// which rounds in the same places, and the L2 reconstruction is a linear, well-conditioned solve
-// of those layers. The tolerance is 10 n u (|value| + the channel's mean magnitude): a reduction
+// The variance layers join float Welford sums (one process) or combine them in double (several).
+// Each Welford term is a product of deviations from a float running mean, whose rounding (u times
+// the mean) the term carries times the deviation: over n passes the variance of the mean v then
+// errs by about n u |mean| sqrt(n v) / n, which where the mean dwarfs the spread (a pixel that
+// sees the light in every pass) is many times n u v. The L2 reconstruction is a linear,
+// well-conditioned solve of those layers. The tolerance is 10 n u (|value| + the channel's mean
+// magnitude), and for a variance layer 10 n u |mean| sqrt(n |value|) besides: a reduction
 // that lost a pass, counted one twice or summed squared deviations instead of combining them
 // errs by a fraction 1/n of the values, thousands of times more. The L1 reconstruction is not
 // held to it (its reweighting by 1 / |residual| magnifies rounding near zero residuals to about
@@ -57,8 +61,18 @@ void expect_same_image(const std::string& want_path, const std::string& got_path
   ASSERT_EQ(want.height, got.height);
   const double u = std::ldexp(1.0, -24);
   const size_t channels = want.channel_count(), pixels = size_t(want.width) * want.height;
+  // The channel holding the mean whose variance channel c holds ("primal_variance.R": "primal.R"), or -1.
+  auto mean_channel = [&](size_t c) {
+    const std::string& name = want.channels[c];
+    const size_t at = name.find("_variance");
+    if (at == std::string::npos) return -1;
+    const std::string mean = name.substr(0, at) + name.substr(at + 9);
+    const auto it = std::find(want.channels.begin(), want.channels.end(), mean);
+    return it == want.channels.end() ? -1 : int(it - want.channels.begin());
+  };
   for (size_t c = 0; c < channels; ++c) {
     if (std::find(skip.begin(), skip.end(), want.channels[c]) != skip.end()) continue;
+    const int mean_of = mean_channel(c);
     double magnitude = 0;
     for (size_t p = 0; p < pixels; ++p) magnitude += std::abs(want.pixels[p * channels + c]);
     magnitude /= double(pixels);
@@ -66,7 +80,8 @@ void expect_same_image(const std::string& want_path, const std::string& got_path
     for (size_t p = 0; p < pixels && bad < 3; ++p) {
       const double a = want.pixels[p * channels + c], b = got.pixels[p * channels + c];
       ASSERT_TRUE(std::isfinite(b));
-      const double tolerance = 10.0 * n * u * (std::abs(a) + magnitude);
+      double tolerance = 10.0 * n * u * (std::abs(a) + magnitude);
+      if (mean_of >= 0) tolerance += 10.0 * n * u * std::abs(want.pixels[p * channels + mean_of]) * std::sqrt(n * std::abs(a));
       if (std::abs(a - b) > tolerance) {
         ++bad;
         ADD_FAILURE() << want.channels[c] << " at pixel " << p << ": " << a << " (one process) vs " << b

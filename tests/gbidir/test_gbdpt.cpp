@@ -107,6 +107,8 @@ TEST(Gbdpt, PowerPrimalIsBdptsImage) {
     IntegratorParams power(std::map<std::string, std::string>{{"primal", "power"}});
     GptSettings gs = gbdpt_settings(power), pairs_settings = gbdpt_settings(IntegratorParams{});
     gs.shift = pairs_settings.shift = c.shift;
+    // bdpt's image has no extra direct samples: the emission seen from the camera is one sample's.
+    gs.direct_samples = pairs_settings.direct_samples = 0;
     std::vector<float> primal = GradientBidirectional(on_device.inputs(), gs, power).render_gradients(s).primal;
     std::vector<float> pairs =
         GradientBidirectional(on_device.inputs(), pairs_settings).render_gradients(s).primal;
