@@ -153,7 +153,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                              ->group("Integrator parameters");
   param("--direct-samples", "direct_samples",
         "camera rays a pixel and pass, besides the base paths', that estimate the emission seen directly (the "
-        "direct layer, which the gradients leave out): a primary ray each (default 0)")
+        "direct layer, which the gradients leave out): a primary ray each (default 8)")
       ->check(CLI::Range(0, 64));
   param("--batches", "batches",
         "batches of paths (gpt: groups) a chunk, stepped in turn so that the device shades one while Embree "

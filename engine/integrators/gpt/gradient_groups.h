@@ -33,8 +33,9 @@ struct GptSettings {
   float shift_threshold = GDR_GLOSSY_THRESHOLD;
   bool aux = false;
   // Camera samples a pixel and pass of the emission seen directly, besides the base path's own
-  // (render/seen_emission.h): the direct layer's mean over 1 + direct_samples.
-  int direct_samples = 0;
+  // (render/seen_emission.h): the direct layer's mean over 1 + direct_samples. Eight took the
+  // Cornell box's relMSE at 32 s to 0.26 of gpt's and 0.12 of gbdpt's without them (README).
+  int direct_samples = 8;
   bool power_primal = false;  // G-BDPT: the primal under the power heuristic (kernels/gbidir/weights.h)
   ManifoldSettings manifold;
   size_t in_flight = 0;  // groups a chunk at most (0: GradientGroups::chunk_capacity_for's)

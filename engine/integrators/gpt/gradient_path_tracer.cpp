@@ -12,7 +12,7 @@ const std::vector<std::string> kGptParams = {"shift", "shift_threshold", "aux", 
 GptSettings gpt_settings(const IntegratorParams& params) {
   GptSettings s = gpt_shift_settings(params);
   s.aux = params.flag("aux", false);
-  s.direct_samples = int(params.non_negative("direct_samples", 0.0f));
+  s.direct_samples = int(params.non_negative("direct_samples", float(s.direct_samples)));
   if (params.has("batches")) s.batches = params.choice("batches", "2", {"1", "2"}) == "1" ? 1 : 2;
   return s;
 }

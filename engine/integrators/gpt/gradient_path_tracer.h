@@ -11,7 +11,7 @@
 //                    rejoin the base; render/manifold_walks.h has the walk's settings)
 //   shift_threshold  roughness at or below which a vertex is glossy, not reconnected (0.001)
 //   aux              true: also write the first hits' albedo, normal and depth layers
-//   direct_samples   extra camera rays a pass for the emission seen directly (0), for each pixel
+//   direct_samples   extra camera rays a pass for the emission seen directly (8), for each pixel
 //                    an emitter's edge crosses (integrators/gpt/direct_samples.h): the direct
 //                    layer, which the gradients leave out, at a primary ray a sample
 //   batches          1 or 2 batches of groups a chunk, stepped in turn for host/device overlap
