@@ -45,8 +45,8 @@ nlohmann::json read_json(const std::string& path) {
 // The variance layers join float Welford sums (one process) or combine them in double (several).
 // Each Welford term is a product of deviations from a float running mean, whose rounding (u times
 // the mean) the term carries times the deviation: over n passes the variance of the mean v then
-// errs by about n u |mean| sqrt(n v) / n, which where the mean dwarfs the spread (a pixel that
-// sees the light in every pass) is many times n u v. The L2 reconstruction is a linear,
+// errs by about u |mean| sqrt(n v), which where the mean dwarfs the spread (a pixel that sees the
+// light in every pass) is many times n u v. The L2 reconstruction is a linear,
 // well-conditioned solve of those layers. The tolerance is 10 n u (|value| + the channel's mean
 // magnitude), and for a variance layer 10 n u |mean| sqrt(n |value|) besides: a reduction
 // that lost a pass, counted one twice or summed squared deviations instead of combining them
@@ -81,7 +81,9 @@ void expect_same_image(const std::string& want_path, const std::string& got_path
       const double a = want.pixels[p * channels + c], b = got.pixels[p * channels + c];
       ASSERT_TRUE(std::isfinite(b));
       double tolerance = 10.0 * n * u * (std::abs(a) + magnitude);
-      if (mean_of >= 0) tolerance += 10.0 * n * u * std::abs(want.pixels[p * channels + mean_of]) * std::sqrt(n * std::abs(a));
+      if (mean_of >= 0) {
+        tolerance += 10.0 * n * u * std::abs(want.pixels[p * channels + mean_of]) * std::sqrt(n * std::abs(a));
+      }
       if (std::abs(a - b) > tolerance) {
         ++bad;
         ADD_FAILURE() << want.channels[c] << " at pixel " << p << ": " << a << " (one process) vs " << b
