@@ -64,11 +64,10 @@ void expect_same_image(const std::string& want_path, const std::string& got_path
   // The channel holding the mean whose variance channel c holds ("primal_variance.R": "primal.R"), or -1.
   auto mean_channel = [&](size_t c) {
     const std::string& name = want.channels[c];
-    const size_t at = name.find("_variance");
+    const std::string suffix = "_variance";
+    const size_t at = name.find(suffix);
     if (at == std::string::npos) return -1;
-    const std::string mean = name.substr(0, at) + name.substr(at + 9);
-    const auto it = std::find(want.channels.begin(), want.channels.end(), mean);
-    return it == want.channels.end() ? -1 : int(it - want.channels.begin());
+    return want.channel(name.substr(0, at) + name.substr(at + suffix.size()));
   };
   for (size_t c = 0; c < channels; ++c) {
     if (std::find(skip.begin(), skip.end(), want.channels[c]) != skip.end()) continue;
