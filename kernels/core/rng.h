@@ -11,9 +11,12 @@
 // Each round takes both halves of its products from one 32x32 -> 64-bit multiply, and the state
 // lives in scalars: PoCL's CPU mul_hi(uint) is built from four 16-bit products, and uint4 state
 // compiles to lane inserts and extracts, which together made Philox the largest cost of the
-// shading kernels.
-inline uint4 philox4x32_10(uint4 c, uint2 k) {
-  uint c0 = c.x, c1 = c.y, c2 = c.z, c3 = c.w, k0 = k.x, k1 = k.y;
+// shading kernels. The words come and go by pointer, so that a kernel written for PoCL's
+// vectorizer, which rejects any vector-typed value in a work item's code, can use them
+// (tests/bench/bench_vectorization.cpp).
+__attribute__((always_inline)) inline void philox4x32_10_words(uint* w0, uint* w1, uint* w2, uint* w3, uint k0, uint k1) {
+  uint c0 = *w0, c1 = *w1, c2 = *w2, c3 = *w3;
+#pragma unroll
   for (int i = 0; i < 10; ++i) {
     ulong p0 = (ulong)GDR_PHILOX_M0 * (ulong)c0, p1 = (ulong)GDR_PHILOX_M1 * (ulong)c2;
     c0 = (uint)(p1 >> 32) ^ c1 ^ k0;
@@ -23,6 +26,12 @@ inline uint4 philox4x32_10(uint4 c, uint2 k) {
     k0 += GDR_PHILOX_W0;
     k1 += GDR_PHILOX_W1;
   }
+  *w0 = c0, *w1 = c1, *w2 = c2, *w3 = c3;
+}
+
+inline uint4 philox4x32_10(uint4 c, uint2 k) {
+  uint c0 = c.x, c1 = c.y, c2 = c.z, c3 = c.w;
+  philox4x32_10_words(&c0, &c1, &c2, &c3, k.x, k.y);
   return (uint4)(c0, c1, c2, c3);
 }
 
