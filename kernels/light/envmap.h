@@ -14,7 +14,7 @@
 
 // u from atan2(x, -z), v = theta / pi measured from +y (local frame).
 inline float2 envmap_uv(float3 d) {
-  float u = atan2(d.x, -d.z) * (0.5f * M_1_PI_F);
+  float u = atan2_approx(d.x, -d.z) * (0.5f * M_1_PI_F);
   return (float2)(u - floor(u), acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F);
 }
 // theta = pi v, phi = 2 pi u, by sinpi and cospi (no argument reduction by pi).

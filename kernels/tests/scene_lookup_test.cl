@@ -32,3 +32,9 @@ __kernel void environment_sample_rng(SCENE_DATA_ARGS, int light_count, int env, 
   float4 u = rng_block(seed, 0u, i, 0u);
   out[i] = (float4)(environment_sample(&s, &s.lights[env], u.xy), 0.0f);
 }
+
+// out[i] = the lat-long position (u, v) of direction dir[i] (light/envmap.h).
+__kernel void environment_uv(uint n, __global const float4* dir, __global float2* out) {
+  uint i = get_global_id(0);
+  if (i < n) out[i] = envmap_uv(dir[i].xyz);
+}

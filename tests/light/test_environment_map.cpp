@@ -5,10 +5,12 @@
 // Every value comes from the kernels (kernels/light/envmap.h through kernels/light/lights.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <vector>
 
 #include "bsdf/chi2.h"
 #include "image/image_io.h"
@@ -75,6 +77,35 @@ void grid_texel(int c, int r, float* rgb) {
   rgb[0] = pole ? 3.0f + r : 1.0f + c + 10.0f * r;
   rgb[1] = pole ? 5.0f : 100.0f + c * r;
   rgb[2] = 0.5f + r;
+}
+
+// The lat-long position of a direction is Mitsuba's, u = atan2(x, -z) / 2 pi wrapped to [0, 1) and
+// v = acos(y) / pi, to 1e-6 (the kernel's atan2 is a polynomial, the host's reference is in
+// double), on directions all around the sphere: every octant, the axes and the diagonals between
+// them, where the polynomial changes branch.
+TEST(EnvironmentMap, UvOfDirectionsIsMitsubasToAMillionth) {
+  std::vector<cl_float4> dirs;
+  for (int k = 0; k <= 64; ++k)
+    for (int j = 0; j < 256; ++j) dirs.push_back(direction(j / 256.0 + 1e-4 * (k % 3), (k + 0.5) / 65.0));
+  for (float x : {-1.0f, 0.0f, 1.0f})
+    for (float z : {-1.0f, 0.0f, 1.0f})
+      if (x != 0.0f || z != 0.0f) dirs.push_back(cl_float4{{x, 0.3f, z, 0.0f}});
+  Context& ctx = test::default_context();
+  Buffer<cl_float4> in(ctx, dirs);
+  Buffer<cl_float2> out(ctx, dirs.size());
+  ctx.program("tests/scene_lookup_test.cl")->kernel("environment_uv").args(cl_uint(dirs.size()), in, out).run(dirs.size());
+  std::vector<cl_float2> uv = out.read();
+  double worst_u = 0, worst_v = 0;
+  for (size_t i = 0; i < dirs.size(); ++i) {
+    const float* d = dirs[i].s;
+    double u = std::atan2(double(d[0]), -double(d[2])) / (2 * M_PI);
+    u -= std::floor(u);
+    double du = std::fabs(uv[i].s[0] - u);
+    worst_u = std::max(worst_u, std::min(du, 1.0 - du));  // u wraps around at 0 and 1
+    worst_v = std::max(worst_v, std::fabs(uv[i].s[1] - std::acos(std::clamp(double(d[1]), -1.0, 1.0)) / M_PI));
+  }
+  EXPECT_LT(worst_u, 1e-6);
+  EXPECT_LT(worst_v, 1e-6);
 }
 
 TEST(EnvironmentMap, LookupAtGridSamplesReturnsTheirTexels) {
