@@ -37,6 +37,26 @@ inline float gaussian_inverse_guess(float r, float target) {
   return sigma * M_SQRT2_F * erfinv_approx(x);
 }
 
+// The gaussian's inverse cdf over its whole support (a pixel the image does not cut) at `target`,
+// in one step where it lies within r / 2 of the centre (95% of the filter's mass); 0 elsewhere.
+// In units of sigma the cdf is F(x) = sqrt(pi/2) (erf(x / sqrt 2) + erf(2 sqrt 2)) - e (x + 4),
+// e = exp(-8) the offset. x0 = sqrt 2 erfinv((T + 4 e) / sqrt(pi/2) - erf(2 sqrt 2)) leaves the
+// residual F(x0) - T = -e x0 in closed form, and one Halley step from there (the filter
+// f = exp(-x^2 / 2) - e and its slope known from one exp) is as close to the root as the
+// bracketed Newton steps get for |x0| <= 2 (tests/camera/test_camera_importance.cpp). Those took a
+// log and three exps an axis, this a log and one.
+inline int gaussian_central_inverse(float r, float target, float* t) {
+  float sigma = 0.25f * r;
+  const float sqrt_half_pi = 1.2533141f, e = exp(-8.0f), erf_cut = 1.0f - 6.3342484e-5f;
+  float y = (target / sigma + 4.0f * e) / sqrt_half_pi - erf_cut;
+  if (!(fabs(y) <= 0.95449974f)) return 0;  // erf(sqrt 2): |x0| <= 2
+  float x = M_SQRT2_F * erfinv_approx(y);
+  float g = exp(-0.5f * x * x), f = g - e, residual = -e * x, slope = -x * g;
+  x -= 2.0f * residual * f / (2.0f * f * f - residual * slope);
+  *t = clamp(sigma * x, -r, r);
+  return 1;
+}
+
 inline float filter_cdf(int filter, float r, float t) {
   t = clamp(t, -r, r);
   if (filter == FILTER_TENT) return t <= 0.0f ? (t + r) * (t + r) / (2.0f * r) : r - (r - t) * (r - t) / (2.0f * r);
@@ -77,6 +97,7 @@ inline float sample_filter_axis(int filter, float r, float2 range, float u) {
   if (filter == FILTER_TENT) {
     t = target <= 0.5f * r ? -r + sqrt(2.0f * r * target) : r - sqrt(fmax(2.0f * r * (r - target), 0.0f));
   } else {
+    if (lo == -r && hi == r && gaussian_central_inverse(r, target, &t)) return t;
     t = clamp(gaussian_inverse_guess(r, target), lo, hi);
     for (int i = 0; i < 32; ++i) {
       float e = filter_cdf(filter, r, t) - target;
