@@ -29,7 +29,7 @@ __attribute__((always_inline)) inline void philox4x32_10_words(uint* w0, uint* w
   *w0 = c0, *w1 = c1, *w2 = c2, *w3 = c3;
 }
 
-inline uint4 philox4x32_10(uint4 c, uint2 k) {
+__attribute__((always_inline)) inline uint4 philox4x32_10(uint4 c, uint2 k) {
   uint c0 = c.x, c1 = c.y, c2 = c.z, c3 = c.w;
   philox4x32_10_words(&c0, &c1, &c2, &c3, k.x, k.y);
   return (uint4)(c0, c1, c2, c3);
