@@ -65,7 +65,7 @@ inline float erfinv_approx(float x) {
   return p * x;
 }
 
-// atan2(y, x) in (-pi, pi], within 3e-7 of it (atan2_approx(0, 0) = 0 whatever the zeros' signs):
+// atan2(y, x) in (-pi, pi], within about 3e-7 of it (atan2_approx(0, 0) = 0 whatever the zeros' signs):
 // PoCL's atan2 is an out-of-line call that took 3% of a render of Mitsuba's material-preview
 // scene. The angle of the smaller over the larger magnitude, reduced past tan(pi/8) by
 // atan(a) = pi/4 + atan((a - 1) / (a + 1)), from Cephes' atanf polynomial.

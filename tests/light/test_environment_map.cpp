@@ -80,10 +80,10 @@ void grid_texel(int c, int r, float* rgb) {
 }
 
 // The lat-long position of a direction is Mitsuba's, u = atan2(x, -z) / 2 pi wrapped to [0, 1) and
-// v = acos(y) / pi, to 1e-6 (the kernel's atan2 is a polynomial, the host's reference is in
-// double), on directions all around the sphere: every octant, the axes and the diagonals between
-// them, where the polynomial changes branch.
-TEST(EnvironmentMap, UvOfDirectionsIsMitsubasToAMillionth) {
+// v = acos(y) / pi, to 2e-7 (the kernel's atan2 is a polynomial, the host's reference is in
+// double; float rounding alone leaves about 6e-8), on directions all around the sphere: every
+// octant, the axes and the diagonals between them, where the polynomial changes branch.
+TEST(EnvironmentMap, UvOfDirectionsIsMitsubas) {
   std::vector<cl_float4> dirs;
   for (int k = 0; k <= 64; ++k)
     for (int j = 0; j < 256; ++j) dirs.push_back(direction(j / 256.0 + 1e-4 * (k % 3), (k + 0.5) / 65.0));
@@ -104,8 +104,8 @@ TEST(EnvironmentMap, UvOfDirectionsIsMitsubasToAMillionth) {
     worst_u = std::max(worst_u, std::min(du, 1.0 - du));  // u wraps around at 0 and 1
     worst_v = std::max(worst_v, std::fabs(uv[i].s[1] - std::acos(std::clamp(double(d[1]), -1.0, 1.0)) / M_PI));
   }
-  EXPECT_LT(worst_u, 1e-6);
-  EXPECT_LT(worst_v, 1e-6);
+  EXPECT_LT(worst_u, 2e-7);
+  EXPECT_LT(worst_v, 2e-7);
 }
 
 TEST(EnvironmentMap, LookupAtGridSamplesReturnsTheirTexels) {
