@@ -7,10 +7,10 @@
 //   - bounce_lanes: eight items a work item, in float8 and uint8 values.
 // PoCL runs a work group as a loop over its work items, which LLVM's loop vectorizer widens (8
 // work items to an AVX2 register) only if the loop body holds no value of vector type, no call
-// and no inner loop. bounce_aos fails all three (cospi and sinpi stay library calls). So does
-// bounce_soa, without a call or a vector in its source: PoCL's SLP pass, which runs before the
-// loop vectorizer, packs its pairs of like scalar operations (u0 and u1, say) into vectors.
-// bounce_lanes does the widening itself.
+// and no inner loop. bounce_aos holds vector values and calls (cospi and sinpi stay library
+// calls). bounce_soa has neither in its source and is still refused: PoCL's SLP pass, which runs
+// before the loop vectorizer, packs its pairs of like scalar operations (u0 and u1, say) into
+// vectors. bounce_lanes does the widening itself.
 #include "core/frame.h"
 #include "core/geometry.h"
 #include "core/rng.h"
