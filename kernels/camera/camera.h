@@ -19,39 +19,39 @@ inline float filter_erfc(float x) {
   return poly * exp(-x * x);
 }
 
+// The gaussian filter in units of sigma = r / 4 is exp(-x^2 / 2) less its value at the cut x = 4,
+// the offset exp(-8); sqrt(pi / 2) is the integral of exp(-x^2 / 2) over x >= 0, and erfc(2 sqrt 2)
+// the share of that integral past the cut.
+#define GAUSSIAN_OFFSET exp(-8.0f)
+#define GAUSSIAN_SQRT_HALF_PI 1.2533141f
+#define GAUSSIAN_ERFC_CUT 6.3342484e-5f
+
 inline float gaussian_tail(float r, float t) {  // integral over [t, r], 0 <= t <= r
   float sigma = 0.25f * r, k = M_SQRT1_2_F / sigma;
   // erfc(r k) = erfc(2 sqrt 2) at the cut r = 4 sigma, whatever r.
-  const float sqrt_half_pi = 1.2533141f, bias = exp(-8.0f), erfc_cut = 6.3342484e-5f;
   float erfc_t = t > 0.0f ? filter_erfc(t * k) : 1.0f;
-  return fmax(sigma * sqrt_half_pi * (erfc_t - erfc_cut) - bias * (r - t), 0.0f);
+  return fmax(sigma * GAUSSIAN_SQRT_HALF_PI * (erfc_t - GAUSSIAN_ERFC_CUT) - GAUSSIAN_OFFSET * (r - t), 0.0f);
 }
 
-// Where the gaussian filter's cdf reaches `target`, ignoring its cut at r and its offset (both
-// below 4e-4 of its peak): the start of the Newton steps that invert the filter's own cdf, which
-// then take one or two steps instead of five or more from the centre.
+// Where the gaussian filter's cdf (from -r) reaches `target`, to first order. In units of sigma
+// the cdf is F(x) = sqrt(pi/2) (erf(x / sqrt 2) + erf(2 sqrt 2)) - e (x + 4), e the offset;
+// x0 = sqrt 2 erfinv((T + 4 e) / sqrt(pi/2) - erf(2 sqrt 2)) leaves the residual
+// F(x0) - T = -e x0, below 4e-4 of the peak, which gaussian_halley_step removes in closed form.
 inline float gaussian_inverse_guess(float r, float target) {
   float sigma = 0.25f * r;
-  const float sqrt_half_pi = 1.2533141f;
-  float x = clamp(target / (sigma * sqrt_half_pi) - 1.0f, -0.9999999f, 0.9999999f);
-  return sigma * M_SQRT2_F * erfinv_approx(x);
+  float y = (target / sigma + 4.0f * GAUSSIAN_OFFSET) / GAUSSIAN_SQRT_HALF_PI - (1.0f - GAUSSIAN_ERFC_CUT);
+  return sigma * M_SQRT2_F * erfinv_approx(clamp(y, -0.9999999f, 0.9999999f));
 }
 
-// The gaussian's inverse cdf over its whole support (a pixel the image does not cut) at `target`,
-// in one step where it lies within r / 2 of the centre (95% of the filter's mass); 0 elsewhere.
-// In units of sigma the cdf is F(x) = sqrt(pi/2) (erf(x / sqrt 2) + erf(2 sqrt 2)) - e (x + 4),
-// e = exp(-8) the offset. x0 = sqrt 2 erfinv((T + 4 e) / sqrt(pi/2) - erf(2 sqrt 2)) leaves the
-// residual F(x0) - T = -e x0 in closed form, and one Halley step from there (the filter
-// f = exp(-x^2 / 2) - e and its slope known from one exp) is as close to the root as the
-// bracketed Newton steps get for |x0| <= 2 (tests/camera/test_camera_importance.cpp). Those took a
-// log and three exps an axis, this a log and one.
-inline int gaussian_central_inverse(float r, float target, float* t) {
-  float sigma = 0.25f * r;
-  const float sqrt_half_pi = 1.2533141f, e = exp(-8.0f), erf_cut = 1.0f - 6.3342484e-5f;
-  float y = (target / sigma + 4.0f * e) / sqrt_half_pi - erf_cut;
-  if (!(fabs(y) <= 0.95449974f)) return 0;  // erf(sqrt 2): |x0| <= 2
-  float x = M_SQRT2_F * erfinv_approx(y);
-  float g = exp(-0.5f * x * x), f = g - e, residual = -e * x, slope = -x * g;
+// One Halley step from the guess t0 (gaussian_inverse_guess) of a pixel the image does not cut,
+// where it lies within r / 2 of the centre (95% of the filter's mass); 0 elsewhere. The residual
+// -e x0 is known, and the filter f = exp(-x^2 / 2) - e and its slope come from one exp: the step
+// is as close to the root as the bracketed Newton steps get (tests/camera/
+// test_camera_importance.cpp), which take three exps where this takes one.
+inline int gaussian_halley_step(float r, float t0, float* t) {
+  float sigma = 0.25f * r, x = t0 / sigma;
+  if (!(fabs(x) <= 2.0f)) return 0;
+  float g = exp(-0.5f * x * x), f = g - GAUSSIAN_OFFSET, residual = -GAUSSIAN_OFFSET * x, slope = -x * g;
   x -= 2.0f * residual * f / (2.0f * f * f - residual * slope);
   *t = clamp(sigma * x, -r, r);
   return 1;
@@ -77,7 +77,7 @@ inline float filter_eval(int filter, float r, float t) {
   if (filter == FILTER_TENT) return 1.0f - fabs(t) / r;
   if (filter == FILTER_GAUSSIAN) {
     float sigma = 0.25f * r;
-    return fmax(exp(-t * t / (2.0f * sigma * sigma)) - exp(-8.0f), 0.0f);
+    return fmax(exp(-t * t / (2.0f * sigma * sigma)) - GAUSSIAN_OFFSET, 0.0f);
   }
   return 1.0f;
 }
@@ -97,8 +97,9 @@ inline float sample_filter_axis(int filter, float r, float2 range, float u) {
   if (filter == FILTER_TENT) {
     t = target <= 0.5f * r ? -r + sqrt(2.0f * r * target) : r - sqrt(fmax(2.0f * r * (r - target), 0.0f));
   } else {
-    if (lo == -r && hi == r && gaussian_central_inverse(r, target, &t)) return t;
-    t = clamp(gaussian_inverse_guess(r, target), lo, hi);
+    float guess = gaussian_inverse_guess(r, target);
+    if (lo == -r && hi == r && gaussian_halley_step(r, guess, &t)) return t;
+    t = clamp(guess, lo, hi);
     for (int i = 0; i < 32; ++i) {
       float e = filter_cdf(filter, r, t) - target;
       // Within a few float steps of the cdf (at most 0.63 r): in the tails, where the filter is
