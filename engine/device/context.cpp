@@ -166,10 +166,13 @@ Kernel::Kernel(Kernel&& o) noexcept : context_(o.context_), kernel_(o.kernel_), 
   o.kernel_ = nullptr;
 }
 
-void Kernel::run(size_t global, size_t local) {
-  if (global == 0) return;
-  size_t padded = (global + local - 1) / local * local;
-  launch(1, &padded, &local, global);
+void Kernel::run(size_t global, size_t local) { run_lanes(global, 1, local); }
+
+void Kernel::run_lanes(size_t items, size_t lanes, size_t local) {
+  if (items == 0) return;
+  size_t groups = (items + lanes - 1) / lanes;
+  size_t padded = (groups + local - 1) / local * local;
+  launch(1, &padded, &local, items);
 }
 
 void Kernel::run_2d(size_t width, size_t height, size_t local_x, size_t local_y) {

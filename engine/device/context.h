@@ -171,6 +171,9 @@ class Kernel {
   // every new local size, so it stays fixed; kernels check their own bound). Waits for the end
   // and adds the device time to stats under "kernel/<name>".
   void run(size_t global, size_t local = 64);
+  // `items` for a kernel whose work items take `lanes` consecutive items each (the stats count
+  // items).
+  void run_lanes(size_t items, size_t lanes, size_t local = 64);
   void run_2d(size_t width, size_t height, size_t local_x = 8, size_t local_y = 8);
   const std::string& name() const { return name_; }
 

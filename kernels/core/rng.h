@@ -35,6 +35,25 @@ __attribute__((always_inline)) inline uint4 philox4x32_10(uint4 c, uint2 k) {
   return (uint4)(c0, c1, c2, c3);
 }
 
+// The same on eight counters at once (one per lane, kernels written eight paths a work item):
+// vector mul_hi widens where the scalar 64-bit products would not.
+__attribute__((always_inline)) inline void philox4x32_10_lanes(uint8* w0, uint8* w1, uint8* w2, uint8* w3, uint k0,
+                                                               uint k1) {
+  uint8 c0 = *w0, c1 = *w1, c2 = *w2, c3 = *w3;
+#pragma unroll
+  for (int i = 0; i < 10; ++i) {
+    uint8 hi0 = mul_hi(c0, (uint8)GDR_PHILOX_M0), lo0 = c0 * GDR_PHILOX_M0;
+    uint8 hi1 = mul_hi(c2, (uint8)GDR_PHILOX_M1), lo1 = c2 * GDR_PHILOX_M1;
+    c0 = hi1 ^ c1 ^ k0;
+    c1 = lo1;
+    c2 = hi0 ^ c3 ^ k1;
+    c3 = lo0;
+    k0 += GDR_PHILOX_W0;
+    k1 += GDR_PHILOX_W1;
+  }
+  *w0 = c0, *w1 = c1, *w2 = c2, *w3 = c3;
+}
+
 // 24-bit mantissa: uniform in [0, 1), never 1.
 inline float rng_to_unit(uint x) { return (float)(x >> 8) * 0x1.0p-24f; }
 
@@ -42,6 +61,22 @@ inline float rng_to_unit(uint x) { return (float)(x >> 8) * 0x1.0p-24f; }
 inline float4 rng_block(uint seed, uint pixel, uint sample, uint block) {
   uint4 r = philox4x32_10((uint4)(pixel, sample, block, 0x67647266u /* "gdrf" */), (uint2)(seed, 0x5eedu));
   return (float4)(rng_to_unit(r.x), rng_to_unit(r.y), rng_to_unit(r.z), rng_to_unit(r.w));
+}
+
+// rng_block of eight (pixel, sample, block) counters: lane k's four uniforms are (x, y, z, w)[k].
+typedef struct {
+  float8 x, y, z, w;
+} RngBlockLanes;
+
+__attribute__((always_inline)) inline RngBlockLanes rng_block_lanes(uint seed, uint8 pixel, uint8 sample, uint8 block) {
+  uint8 c0 = pixel, c1 = sample, c2 = block, c3 = (uint8)0x67647266u;
+  philox4x32_10_lanes(&c0, &c1, &c2, &c3, seed, 0x5eedu);
+  RngBlockLanes r;
+  r.x = convert_float8(c0 >> 8) * 0x1.0p-24f;
+  r.y = convert_float8(c1 >> 8) * 0x1.0p-24f;
+  r.z = convert_float8(c2 >> 8) * 0x1.0p-24f;
+  r.w = convert_float8(c3 >> 8) * 0x1.0p-24f;
+  return r;
 }
 
 // One uniform for a single dimension (a quarter of a block's work; use rng_block in hot loops).

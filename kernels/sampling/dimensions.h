@@ -9,8 +9,8 @@
 #include "shared/sampler_types.h"
 
 #define RNG_BLOCK_CAMERA 0u
-#define RNG_BLOCK_LIGHT(depth) (1u + 2u * (uint)(depth))
-#define RNG_BLOCK_BSDF(depth) (2u + 2u * (uint)(depth))
+#define RNG_BLOCK_LIGHT(depth) (1u + 2u * (depth))
+#define RNG_BLOCK_BSDF(depth) (2u + 2u * (depth))
 
 #define RNG_LIGHT_SUBPATH 0x80000000u
 #define RNG_BLOCK_EMISSION (RNG_LIGHT_SUBPATH + 0u)      // x: light selection, yz: position

@@ -13,6 +13,7 @@
 // vectors. bounce_lanes does the widening itself.
 #include "core/frame.h"
 #include "core/geometry.h"
+#include "core/lanes.h"
 #include "core/rng.h"
 #include "core/warp.h"
 
@@ -32,35 +33,6 @@ __kernel void bounce_aos(uint n, uint seed, __global const float4* normal, __glo
   float q = fmin(max3(beta), 0.95f);
   throughput_out[i] = u.z < q ? (float4)(beta / q, 0.0f) : (float4)(0.0f);
   dir[i] = (float4)(wi, 0.0f);
-}
-
-// sin(pi y) and cos(pi y) for |y| <= 1/4 by their Taylor series to the ninth power (error below
-// 4e-7), in values of type F: cospi and sinpi are calls on PoCL.
-#define PROBE_SINCOSPI_QUARTER(name, F)                                                                  \
-  inline void name(F y, F* s, F* c) {                                                                    \
-    F x = M_PI_F * y, x2 = x * x;                                                                        \
-    *s = x * (1.0f + x2 * (-1.0f / 6.0f + x2 * (1.0f / 120.0f + x2 * (-1.0f / 5040.0f + x2 * (1.0f / 362880.0f))))); \
-    *c = 1.0f + x2 * (-0.5f + x2 * (1.0f / 24.0f + x2 * (-1.0f / 720.0f + x2 * (1.0f / 40320.0f))));    \
-  }
-PROBE_SINCOSPI_QUARTER(probe_sincospi_quarter, float)
-PROBE_SINCOSPI_QUARTER(probe_sincospi_quarter8, float8)
-
-// Philox-4x32-10 on eight counters at once: vector mul_hi here, where the scalar form (core/rng.h)
-// needs 64-bit products.
-inline void probe_philox8(uint8* w0, uint8* w1, uint8* w2, uint8* w3, uint k0, uint k1) {
-  uint8 c0 = *w0, c1 = *w1, c2 = *w2, c3 = *w3;
-#pragma unroll
-  for (int i = 0; i < 10; ++i) {
-    uint8 hi0 = mul_hi(c0, (uint8)GDR_PHILOX_M0), lo0 = c0 * GDR_PHILOX_M0;
-    uint8 hi1 = mul_hi(c2, (uint8)GDR_PHILOX_M1), lo1 = c2 * GDR_PHILOX_M1;
-    c0 = hi1 ^ c1 ^ k0;
-    c1 = lo1;
-    c2 = hi0 ^ c3 ^ k1;
-    c3 = lo0;
-    k0 += GDR_PHILOX_W0;
-    k1 += GDR_PHILOX_W1;
-  }
-  *w0 = c0, *w1 = c1, *w2 = c2, *w3 = c3;
 }
 
 // The bounce of the items whose counters are `ids` (the first one i), in values of type F with
@@ -103,7 +75,7 @@ inline void probe_philox8(uint8* w0, uint8* w1, uint8* w2, uint8* w3, uint k0, u
 __kernel void bounce_soa(uint n, uint seed, __global const float* in, __global float* out) {
   uint i = get_global_id(0);
   if (i >= n) return;
-  PROBE_BOUNCE(float, int, uint, i, PROBE_LOAD1, PROBE_STORE1, philox4x32_10_words, probe_sincospi_quarter,
+  PROBE_BOUNCE(float, int, uint, i, PROBE_LOAD1, PROBE_STORE1, philox4x32_10_words, sincospi_quarter,
                convert_float)
 }
 
@@ -113,5 +85,5 @@ __kernel void bounce_lanes(uint n, uint seed, __global const float* in, __global
   if (g >= n / 8) return;
   uint i = 8 * g;
   PROBE_BOUNCE(float8, int8, uint8, (uint8)(i) + (uint8)(0, 1, 2, 3, 4, 5, 6, 7), PROBE_LOAD8, PROBE_STORE8,
-               probe_philox8, probe_sincospi_quarter8, convert_float8)
+               philox4x32_10_lanes, sincospi_quarter_lanes, convert_float8)
 }

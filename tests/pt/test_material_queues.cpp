@@ -2,7 +2,8 @@
 // holds a shading kernel for each BSDF type the scene uses and none for the others, a render
 // launches exactly those (counted per kernel in the stats), and every routed hit is shaded by
 // one of them. On the project's diffuse Cornell box (one type: no routing), the glass box
-// (diffuse and dielectric) and the environment scene (diffuse, rough conductor, rough plastic).
+// (diffuse and dielectric) and the environment scene (diffuse, rough conductor, rough plastic),
+// with the diffuse queue shaded one path and eight paths a work item (pt_shade_lanes_diffuse).
 // The images do not depend on the routing: scripts/render-hashes renders them bit for bit as one
 // shading kernel did.
 #include <gtest/gtest.h>
@@ -20,7 +21,12 @@
 namespace gdr {
 namespace {
 
-void expect_queues_of(const std::string& file, int expected_types) {
+// The kernel that shades type t's queue.
+std::string shade_kernel(int t, int lanes) {
+  return std::string(lanes == 8 && t == BSDF_DIFFUSE ? "pt_shade_lanes_" : "pt_shade_") + bsdf_type_name(t);
+}
+
+void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32);
   Stats stats;
   test::SceneOnCountingDevice on_device(scene, &stats);
@@ -28,13 +34,16 @@ void expect_queues_of(const std::string& file, int expected_types) {
   s.spp = 2;
   s.seed = 9;
   s.max_depth = 6;
-  PathTracer(on_device.inputs(), PtSettings{}).render(s);
+  PtSettings pt;
+  pt.lanes = lanes;
+  PathTracer(on_device.inputs(), pt).render(s);
 
   KernelFactory kernels(on_device.context, scene);
   int types = 0;
   uint64_t shaded = 0;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
-    const std::string name = std::string("pt_shade_") + bsdf_type_name(t);
+    const std::string name = shade_kernel(t, lanes), other = shade_kernel(t, lanes == 8 ? 1 : 8);
+    if (name != other) EXPECT_EQ(stats.count("kernel_items/" + other), 0u) << file << ": " << other << " ran";
     if (scene.features.bsdf[t]) {
       ++types;
       EXPECT_GT(stats.count("kernel_items/" + name), 0u) << file << ": " << name << " never ran";
@@ -55,9 +64,15 @@ void expect_queues_of(const std::string& file, int expected_types) {
   }
 }
 
-TEST(MaterialQueues, DiffuseOnlySceneLaunchesOnlyDiffuse) { expect_queues_of("cornell-box.xml", 1); }
-TEST(MaterialQueues, GlassBoxLaunchesItsTwoMaterials) { expect_queues_of("glass-box.xml", 2); }
-TEST(MaterialQueues, EnvironmentSceneLaunchesItsThreeMaterials) { expect_queues_of("environment.xml", 3); }
+TEST(MaterialQueues, DiffuseOnlySceneLaunchesOnlyDiffuse) {
+  for (int lanes : {1, 8}) expect_queues_of("cornell-box.xml", 1, lanes);
+}
+TEST(MaterialQueues, GlassBoxLaunchesItsTwoMaterials) {
+  for (int lanes : {1, 8}) expect_queues_of("glass-box.xml", 2, lanes);
+}
+TEST(MaterialQueues, EnvironmentSceneLaunchesItsThreeMaterials) {
+  for (int lanes : {1, 8}) expect_queues_of("environment.xml", 3, lanes);
+}
 
 }  // namespace
 }  // namespace gdr

@@ -19,7 +19,7 @@ constexpr const char* kProgram = "pt/pt.cl";
 
 }  // namespace
 
-const std::vector<std::string> kPtParams = {"strategy", "aux", "batches"};
+const std::vector<std::string> kPtParams = {"strategy", "aux", "batches", "lanes"};
 
 PtSettings pt_settings(const IntegratorParams& params) {
   PtSettings s;
@@ -27,17 +27,19 @@ PtSettings pt_settings(const IntegratorParams& params) {
   s.strategy = strategy == "bsdf" ? PT_STRATEGY_BSDF : strategy == "light" ? PT_STRATEGY_LIGHT : PT_STRATEGY_MIS;
   s.aux = params.flag("aux", false);
   s.batches = params.choice("batches", "2", {"1", "2"}) == "1" ? 1 : 2;
+  if (params.has("lanes")) s.lanes = params.choice("lanes", "8", {"1", "8"}) == "8" ? 8 : 1;
   return s;
 }
 
-PathTracer::Batch::Batch(const RenderInputs& in, const KernelFactory& kernels, size_t capacity, int command_queue)
+PathTracer::Batch::Batch(const RenderInputs& in, const KernelFactory& kernels, size_t capacity, int command_queue,
+                         const MaterialQueues::LaneKernels& lanes)
     : command_queue(command_queue),
       queues(in.context, capacity, true),
       paths(in.context, capacity),
       shadow_rays(in.context, capacity, ray_queue_flags(in.context)),
       shadow_values(in.context, capacity),
       counters(in.context, GDR_COUNTER_NAMES(PT_COUNTERS)),
-      materials(in.context, in.scene, kernels, kProgram, "pt_shade", capacity) {}
+      materials(in.context, in.scene, kernels, kProgram, "pt_shade", capacity, true, lanes) {}
 
 PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
     : in_(in),
@@ -49,8 +51,10 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
   const int batches = batch_count(capacity_, pt_.batches, kMinBatchPaths);
+  MaterialQueues::LaneKernels lanes;
+  if (pt_.lanes.value_or(in.context.is_cpu() ? 8 : 1) == 8) lanes = {"pt_shade_lanes", {BSDF_DIFFUSE}};
   for (int i = 0; i < batches; ++i) {
-    batches_.emplace_back(in, kernels_, batch_capacity(capacity_, batches), i % Context::kQueues);
+    batches_.emplace_back(in, kernels_, batch_capacity(capacity_, batches), i % Context::kQueues, lanes);
   }
   if (pt_.aux) aux_.emplace(in.context, kernels_, kProgram, film_.pixels());
 }
@@ -86,8 +90,8 @@ void PathTracer::enqueue_shade(Batch& b, const GdrPtParams& params, int cur, cl_
     q.kernel
         ->args(params, q.count, q.first, cl_int(b.materials.direct()), b.materials.entries(), b.queues.rays[cur],
                b.queues.slots[cur], b.queues.rays[1 - cur], b.queues.slots[1 - cur], b.shadow_rays, b.shadow_values,
-               b.paths, film_["radiance"], b.counters.buffer(), in_.device_scene)
-        .run(q.count);
+               b.paths, film_["radiance"], b.counters.buffer(), in_.device_scene);
+    q.run();
   }
 }
 

@@ -9,6 +9,9 @@
 //   aux       true: also write the first hits' albedo, normal and depth layers
 //   batches   1 or 2 batches a chunk (default 2; 1 where a chunk has too few paths to split;
 //             scripts/bench-pt --batches 1,2 measures both)
+//   lanes     8: the diffuse queue is shaded eight paths a work item (pt_shade_lanes_diffuse,
+//             written for CPU devices, whose compiler widens no shading kernel across work items);
+//             1: one a work item (default: 8 on CPU devices, 1 on GPUs)
 #pragma once
 #include <deque>
 #include <optional>
@@ -29,6 +32,7 @@ struct PtSettings {
   int strategy = PT_STRATEGY_MIS;  // PT_STRATEGY_*
   bool aux = false;
   int batches = 2;  // a chunk's batches (1 where a chunk has too few paths to split)
+  std::optional<int> lanes;  // 1 or 8 (default: the device's)
 };
 extern const std::vector<std::string> kPtParams;
 PtSettings pt_settings(const IntegratorParams& params);
@@ -58,7 +62,8 @@ class PathTracer : public Integrator {
   // A part of a chunk's paths in flight: its queues, states and counters, its command queue, and
   // where it stands: `active` paths in queue `cur` at `depth`, their shading queued (`shading`).
   struct Batch {
-    Batch(const RenderInputs& in, const KernelFactory& kernels, size_t capacity, int command_queue);
+    Batch(const RenderInputs& in, const KernelFactory& kernels, size_t capacity, int command_queue,
+          const MaterialQueues::LaneKernels& lanes);
     int command_queue;
     RayQueues queues;
     Buffer<GdrPathState> paths;

@@ -1,11 +1,19 @@
 #include "render/wavefront/material_queues.h"
 
+#include <algorithm>
+
 #include "scene/scene_features.h"
 
 namespace gdr {
+namespace {
+
+constexpr size_t kShadingLanes = 8;  // LANES of kernels/core/lanes.h
+
+}  // namespace
 
 MaterialQueues::MaterialQueues(Context& ctx, const Scene& scene, const KernelFactory& kernels,
-                               const std::string& program, const std::string& stage, size_t capacity, bool routed)
+                               const std::string& program, const std::string& stage, size_t capacity, bool routed,
+                               const LaneKernels& lanes)
     : primitives_(ctx) {
   std::vector<cl_uint> types;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
@@ -13,9 +21,14 @@ MaterialQueues::MaterialQueues(Context& ctx, const Scene& scene, const KernelFac
   }
   if (!routed && types.size() > 1) {
     kinds_.push_back(kernels.make(program, stage));
+    lanes_.push_back(1);
     return;
   }
-  for (cl_uint t : types) kinds_.push_back(kernels.make(program, stage + "_" + bsdf_type_name(int(t))));
+  for (cl_uint t : types) {
+    const bool laned = std::find(lanes.types.begin(), lanes.types.end(), int(t)) != lanes.types.end();
+    kinds_.push_back(kernels.make(program, (laned ? lanes.stage : stage) + "_" + bsdf_type_name(int(t))));
+    lanes_.push_back(laned ? kShadingLanes : 1);
+  }
   if (!direct()) {
     types_ = Buffer<cl_uint>(ctx, types);
     keys_ = Buffer<cl_uint>(ctx, capacity);
@@ -28,12 +41,12 @@ const std::vector<MaterialQueues::Queue>& MaterialQueues::route(cl_uint n) {
   queues_.clear();
   if (n == 0) return queues_;
   if (direct()) {
-    queues_.push_back({n, 0, &kinds_[0]});
+    queues_.push_back({n, 0, &kinds_[0], lanes_[0]});
     return queues_;
   }
   const std::vector<cl_uint> starts = primitives_.select_keys(keys_, n, types_, scratch_, entries_);
   for (size_t i = 0; i < kinds_.size(); ++i) {
-    if (starts[i + 1] > starts[i]) queues_.push_back({starts[i + 1] - starts[i], starts[i], &kinds_[i]});
+    if (starts[i + 1] > starts[i]) queues_.push_back({starts[i + 1] - starts[i], starts[i], &kinds_[i], lanes_[i]});
   }
   return queues_;
 }

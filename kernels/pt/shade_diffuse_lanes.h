@@ -1,0 +1,205 @@
+// pt_shade_lanes_diffuse: the diffuse queue shaded eight entries a work item, for CPU devices,
+// where PoCL runs a work group's items one after another in scalar code (README "Tests and
+// benchmarks"). The estimator is pt_shade_hit's for a diffuse hit, from the same random numbers:
+// what touches memory per entry (the queue entry, the surface, emission, the light sample, the
+// appends) runs lane by lane through the scalar helpers; the arithmetic between (Philox, the
+// frame, the BSDF's value and pdf, MIS, the cosine-weighted sample, Russian roulette) runs on
+// float8 lanes. Included by pt.cl after pt_escaped.
+#pragma once
+#include "core/lanes.h"
+
+#if !defined(GDR_BSDF_SELECTED) || defined(GDR_BSDF_DIFFUSE)
+__kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first, int direct,
+                                     __global const uint* sorted, __global const GdrRayHit* rays_in,
+                                     __global const uint* queue_in, __global GdrRayHit* rays_out,
+                                     __global uint* queue_out, __global GdrRay* shadow_rays,
+                                     __global float4* shadow_values, __global GdrPathState* paths,
+                                     __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
+  __local uint scratch[GROUP_RESERVE_SCRATCH];
+  __global uint* nonfinite = &counters[PT_COUNTER_NONFINITE];
+  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
+  uint base = get_global_id(0) * LANES;
+
+  // Per lane: the hit and the path at it (inactive lanes hold harmless values for the lane steps).
+  // The paths' states are gathered first, all eight loads in flight together: the queue's slots
+  // are far apart in the state buffer, and each load alone would wait on memory.
+  uint slot[LANES], pixel[LANES], sample[LANES], depth[LANES], entry[LANES];
+  GdrPathState states[LANES];
+  int active[LANES];
+  for (int k = 0; k < LANES; ++k) {
+    uint e = base + (uint)k;
+    active[k] = e < count && !path_no_segments(params.max_depth);
+    entry[k] = active[k] ? (direct ? e : sorted[first + e]) : 0u;
+    slot[k] = active[k] ? queue_in[entry[k]] : 0u;
+  }
+  for (int k = 0; k < LANES; ++k) {
+    if (active[k]) states[k] = paths[slot[k]];
+  }
+  float twosided[LANES];
+  LaneArray3 p, ng, ns, wo, beta, albedo;
+  for (int k = 0; k < LANES; ++k) {
+    pixel[k] = sample[k] = depth[k] = 0u;
+    twosided[k] = 0.0f;
+    lane_array3_set(&p, k, (float3)(0.0f));
+    lane_array3_set(&ng, k, (float3)(0.0f, 0.0f, 1.0f));
+    lane_array3_set(&ns, k, (float3)(0.0f, 0.0f, 1.0f));
+    lane_array3_set(&wo, k, (float3)(0.0f, 0.0f, 1.0f));
+    lane_array3_set(&beta, k, (float3)(0.0f));
+    lane_array3_set(&albedo, k, (float3)(0.0f));
+    if (!active[k]) continue;
+    active[k] = 0;
+    uint sl = slot[k];
+    GdrPathState st = states[k];
+    GdrRayHit rh = rays_in[entry[k]];
+    if (rh.hit.geomID == GDR_INVALID_ID) {
+      if (direct) pt_escaped(&params, &s, &rh, &paths[sl], film, counters);
+      continue;
+    }
+    float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+    float3 b3 = vload3(0, st.throughput);
+    Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
+#if defined(GDR_LIGHT_AREA)
+    float3 le;
+    if (path_surface_emission(&s, &st, b3, &su, -dir, rh.ray.tfar, params.strategy, &le)) {
+      film_add(film, st.pixel, le, nonfinite);
+    }
+#endif
+    if (path_depth_reached(&st, params.max_depth)) continue;
+    Bsdf b = surface_bsdf_of_type(&s, &su, BSDF_DIFFUSE);
+    active[k] = -1;  // a mask, as the lane steps' comparisons give
+    pixel[k] = st.pixel;
+    sample[k] = st.sample;
+    depth[k] = (uint)st.depth;
+    twosided[k] = b.twosided ? 1.0f : 0.0f;
+    lane_array3_set(&p, k, su.p);
+    lane_array3_set(&ng, k, su.ng);
+    lane_array3_set(&ns, k, su.ns);
+    lane_array3_set(&wo, k, -dir);
+    lane_array3_set(&beta, k, b3);
+    lane_array3_set(&albedo, k, b.diffuse);
+  }
+
+  // The light and BSDF blocks of every lane's numbers (path_state_sampler: no primary samples).
+  uint8 depth8 = vload8(0, depth), pixel8 = vload8(0, pixel), sample8 = vload8(0, sample);
+  RngBlockLanes ul = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_LIGHT(depth8));
+  RngBlockLanes ub = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_BSDF(depth8));
+
+  // Per lane: the light sample (nee_sample without its side test, which the lane step makes).
+  int sampled[LANES];
+  float light_dist[LANES], light_pdf[LANES], light_delta[LANES];
+  LaneArray3 light_wi, light_radiance;
+  float ul_x[LANES], ul_y[LANES], ul_z[LANES];
+  vstore8(ul.x, 0, ul_x);
+  vstore8(ul.y, 0, ul_y);
+  vstore8(ul.z, 0, ul_z);
+  int nee = params.strategy != PT_STRATEGY_BSDF && s.light_count > 0;
+  for (int k = 0; k < LANES; ++k) {
+    sampled[k] = 0;
+    light_dist[k] = 0.0f;
+    light_pdf[k] = 1.0f;
+    light_delta[k] = 0.0f;
+    lane_array3_set(&light_wi, k, (float3)(0.0f, 0.0f, 1.0f));
+    lane_array3_set(&light_radiance, k, (float3)(0.0f));
+    if (!active[k] || !nee) continue;
+    LightSample ls;
+    int light = light_select(&s, ul_x[k]);
+    if (!light_sample(&s, light, lane_array3_get(&p, k), (float2)(ul_y[k], ul_z[k]), &ls)) continue;
+    sampled[k] = 1;
+    light_dist[k] = ls.dist;
+    light_pdf[k] = ls.pdf;
+    light_delta[k] = ls.delta ? 1.0f : 0.0f;
+    lane_array3_set(&light_wi, k, ls.wi);
+    lane_array3_set(&light_radiance, k, ls.radiance);
+  }
+
+  // Lanes: next-event estimation's contribution, then the BSDF sample and roulette.
+  Lanes3 NG = lanes3_load(&ng), BETA = lanes3_load(&beta), ALBEDO = lanes3_load(&albedo);
+  FrameLanes frame = frame_lanes_from_normal(lanes3_load(&ns));
+  Lanes3 wo_local = frame_lanes_to_local(&frame, lanes3_load(&wo));
+  // bsdf_flip_side: a two-sided diffuse surface seen from below shades as from above.
+  int8 flip = (vload8(0, twosided) > 0.0f) & (wo_local.z < 0.0f);
+  float8 flip_sign = select((float8)(1.0f), (float8)(-1.0f), flip);
+  Lanes3 wo_n = lanes3_normalize_or_zero(wo_local);
+  float8 wo_z = wo_n.z * flip_sign;
+
+  Lanes3 LWI = lanes3_load(&light_wi);
+  Lanes3 wi_local = frame_lanes_to_local(&frame, LWI);
+  int8 shadow_ok = (vload8(0, sampled) != 0) & (lanes3_dot(LWI, NG) * wi_local.z > 0.0f);
+  float8 wi_z = lanes3_normalize_or_zero(wi_local).z * flip_sign;
+  int8 upper = (wo_z > 0.0f) & (wi_z > 0.0f);
+  float8 cos_pi = select((float8)(0.0f), wi_z * M_1_PI_F, upper);  // diffuse_eval's factor and pdf
+  float8 bsdf_pdf = select((float8)(0.0f), fmax(wi_z, 0.0f) * M_1_PI_F, upper);
+  float8 lpdf = vload8(0, light_pdf);
+  float8 ratio = bsdf_pdf / lpdf;
+  float8 power = select((float8)(0.0f), 1.0f / (1.0f + ratio * ratio), (lpdf > 0.0f) & isfinite(ratio));
+  int8 unweighted = (vload8(0, light_delta) > 0.0f) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
+  float8 w = select(power, (float8)(1.0f), unweighted);
+  Lanes3 c = lanes3_scale(lanes3_mul(lanes3_mul(BETA, lanes3_scale(ALBEDO, cos_pi)), lanes3_load(&light_radiance)),
+                          w / lpdf);
+  int8 c_positive = shadow_ok & (lanes3_max(c) > 0.0f);
+  LaneArray3 shadow_value;
+  lanes3_store(c, &shadow_value);
+  int shadow[LANES], shadow_nonfinite[LANES];
+  vstore8(c_positive & lanes3_finite(c), 0, shadow);
+  vstore8(c_positive & ~lanes3_finite(c), 0, shadow_nonfinite);
+
+  // bsdf_sample of the diffuse lobe from ub.yz, then path_continue's side test and roulette.
+  Lanes3 wi_s = square_to_cosine_hemisphere_lanes(ub.y, ub.z);
+  int8 sample_ok = (lanes3_dot(wo_n, wo_n) != 0.0f) & (wo_z > 0.0f) & (wi_s.z > 0.0f);
+  float8 pdf = fmax(wi_s.z, 0.0f) * M_1_PI_F;
+  wi_s.z *= flip_sign;
+  Lanes3 weight = {fmax(ALBEDO.x, 0.0f), fmax(ALBEDO.y, 0.0f), fmax(ALBEDO.z, 0.0f)};
+  sample_ok &= lanes3_finite(ALBEDO) & (lanes3_max(weight) > 0.0f);
+  Lanes3 wi = frame_lanes_to_world(&frame, wi_s);
+  sample_ok &= lanes3_dot(wi, NG) * wi_s.z > 0.0f;
+  Lanes3 t = lanes3_mul(BETA, weight);
+  int8 t_finite = lanes3_finite(t);
+  float8 t_max = lanes3_max(t);
+  float8 rr = fmin(t_max, 0.95f);
+  int8 roulette = convert_int8(depth8) + 1 >= params.rr_depth;
+  int8 survives = vload8(0, active) & sample_ok & t_finite & (t_max > 0.0f) & (~roulette | (ub.w < rr));
+  t.x = select(t.x, t.x / rr, roulette);
+  t.y = select(t.y, t.y / rr, roulette);
+  t.z = select(t.z, t.z / rr, roulette);
+  LaneArray3 next_beta, next_wi;
+  lanes3_store(t, &next_beta);
+  lanes3_store(wi, &next_wi);
+  float next_pdf[LANES];
+  vstore8(pdf, 0, next_pdf);
+  int next[LANES], next_nonfinite[LANES];
+  vstore8(survives, 0, next);
+  vstore8(vload8(0, active) & sample_ok & ~t_finite, 0, next_nonfinite);
+
+  // Per lane: the work item's appends, reserved with the group's.
+  uint want[2] = {0u, 0u};
+  for (int k = 0; k < LANES; ++k) {
+    want[0] += shadow[k] ? 1u : 0u;
+    want[1] += next[k] ? 1u : 0u;
+    if (shadow_nonfinite[k]) atomic_inc(nonfinite);
+    if (next_nonfinite[k]) atomic_inc(nonfinite);
+  }
+  const uint which[2] = {PT_COUNTER_SHADOW_RAYS, PT_COUNTER_NEXT_RAYS};
+  group_reserve(scratch, counters, which, 2, want);
+  for (int k = 0; k < LANES; ++k) {
+    float3 pk = lane_array3_get(&p, k), ngk = lane_array3_get(&ng, k);
+    if (shadow[k]) {
+      write_light_ray(&shadow_rays[want[0]], pk, ngk, lane_array3_get(&light_wi, k), light_dist[k], pixel[k]);
+      shadow_values[want[0]] = (float4)(lane_array3_get(&shadow_value, k), 0.0f);
+      want[0] += 1u;
+    }
+    if (next[k]) {
+      GdrPathState st;
+      vstore3(lane_array3_get(&next_beta, k), 0, st.throughput);
+      st.bsdf_pdf = next_pdf[k];
+      st.pixel = pixel[k];
+      st.sample = sample[k];
+      st.depth = (int)depth[k] + 1;
+      st.flags = 0;  // a diffuse sample is never a delta lobe
+      paths[slot[k]] = st;
+      queue_out[want[1]] = slot[k];
+      spawn_ray(&rays_out[want[1]], pk, ngk, lane_array3_get(&next_wi, k), slot[k]);
+      want[1] += 1u;
+    }
+  }
+}
+#endif
