@@ -44,7 +44,7 @@ __attribute__((always_inline)) inline void write_segment_ray(__global GdrRay* r,
 
 // A shadow ray from p toward a light sample (direction wi at distance dist; INFINITY for lights
 // at infinity).
-inline void write_light_ray(__global GdrRay* r, float3 p, float3 ng, float3 wi, float dist, uint id) {
+__attribute__((always_inline)) inline void write_light_ray(__global GdrRay* r, float3 p, float3 ng, float3 wi, float dist, uint id) {
   if (isinf(dist)) {
     write_ray(r, leaving_origin(p, ng, wi), wi, 0.0f, INFINITY, id);
   } else {
