@@ -37,10 +37,11 @@ inline float gaussian_tail(float r, float t) {  // integral over [t, r], 0 <= t 
 // the cdf is F(x) = sqrt(pi/2) (erf(x / sqrt 2) + erf(2 sqrt 2)) - e (x + 4), e the offset;
 // x0 = sqrt 2 erfinv((T + 4 e) / sqrt(pi/2) - erf(2 sqrt 2)) leaves the residual
 // F(x0) - T = -e x0, below 4e-4 of the peak, which gaussian_halley_step removes in closed form.
+// GAUSSIAN_ERFINV_ARGUMENT is the argument of erfinv, also for lanes.
+#define GAUSSIAN_ERFINV_ARGUMENT(r, target) \
+  clamp(((target) / (0.25f * (r)) + 4.0f * GAUSSIAN_OFFSET) / GAUSSIAN_SQRT_HALF_PI - (1.0f - GAUSSIAN_ERFC_CUT), -0.9999999f, 0.9999999f)
 inline float gaussian_inverse_guess(float r, float target) {
-  float sigma = 0.25f * r;
-  float y = (target / sigma + 4.0f * GAUSSIAN_OFFSET) / GAUSSIAN_SQRT_HALF_PI - (1.0f - GAUSSIAN_ERFC_CUT);
-  return sigma * M_SQRT2_F * erfinv_approx(clamp(y, -0.9999999f, 0.9999999f));
+  return 0.25f * r * M_SQRT2_F * erfinv_approx(GAUSSIAN_ERFINV_ARGUMENT(r, target));
 }
 
 // One Halley step from the guess t0 (gaussian_inverse_guess) of a pixel the image does not cut,
@@ -48,11 +49,16 @@ inline float gaussian_inverse_guess(float r, float target) {
 // -e x0 is known, and the filter f = exp(-x^2 / 2) - e and its slope come from one exp: the step
 // is as close to the root as the bracketed Newton steps get (tests/camera/
 // test_camera_importance.cpp), which take three exps where this takes one.
+// GAUSSIAN_HALLEY(F, x) is the step on x = t0 / sigma in values of type F (float, or lanes).
+#define GAUSSIAN_HALLEY(F, x)                                                                         \
+  {                                                                                                  \
+    F g = exp(-0.5f * x * x), f = g - GAUSSIAN_OFFSET, residual = -GAUSSIAN_OFFSET * x, slope = -x * g; \
+    x -= 2.0f * residual * f / (2.0f * f * f - residual * slope);                                    \
+  }
 inline int gaussian_halley_step(float r, float t0, float* t) {
   float sigma = 0.25f * r, x = t0 / sigma;
   if (!(fabs(x) <= 2.0f)) return 0;
-  float g = exp(-0.5f * x * x), f = g - GAUSSIAN_OFFSET, residual = -GAUSSIAN_OFFSET * x, slope = -x * g;
-  x -= 2.0f * residual * f / (2.0f * f * f - residual * slope);
+  GAUSSIAN_HALLEY(float, x)
   *t = clamp(sigma * x, -r, r);
   return 1;
 }

@@ -36,20 +36,24 @@ inline float3 normalize_or(float3 v, float3 fallback) {
 }
 
 // Inverse error function (Giles 2010, single precision, |error| ~ 4e-7); x in (-1, 1).
+// ERFINV_W and ERFINV_CENTRAL (the branch w < 5, p from w) are also written out for lanes.
+#define ERFINV_W(x) (-log(fmax((1.0f - (x)) * (1.0f + (x)), 1e-38f)))
+#define ERFINV_CENTRAL(p, w)              \
+  w = w - 2.5f;                           \
+  p = 2.81022636e-08f;                    \
+  p = 3.43273939e-07f + p * w;            \
+  p = -3.5233877e-06f + p * w;            \
+  p = -4.39150654e-06f + p * w;           \
+  p = 0.00021858087f + p * w;             \
+  p = -0.00125372503f + p * w;            \
+  p = -0.00417768164f + p * w;            \
+  p = 0.246640727f + p * w;               \
+  p = 1.50140941f + p * w;
 inline float erfinv_approx(float x) {
-  float w = -log(fmax((1.0f - x) * (1.0f + x), 1e-38f));
+  float w = ERFINV_W(x);
   float p;
   if (w < 5.0f) {
-    w = w - 2.5f;
-    p = 2.81022636e-08f;
-    p = 3.43273939e-07f + p * w;
-    p = -3.5233877e-06f + p * w;
-    p = -4.39150654e-06f + p * w;
-    p = 0.00021858087f + p * w;
-    p = -0.00125372503f + p * w;
-    p = -0.00417768164f + p * w;
-    p = 0.246640727f + p * w;
-    p = 1.50140941f + p * w;
+    ERFINV_CENTRAL(p, w)
   } else {
     w = sqrt(w) - 3.0f;
     p = -0.000200214257f;

@@ -1,5 +1,9 @@
-// The diffuse queue shaded eight paths a work item (pt_shade_lanes_diffuse, a CPU device's
-// default) makes the decisions pt_shade_diffuse makes, path by path: the same light samples
+// Eight paths a work item (--lanes 8, a CPU device's default). pt_generate_lanes writes the
+// camera rays, queue and path states pt_generate writes, bit for bit: the gaussian filter's lanes
+// do the scalar operations, and the other filters and the pixels the image cuts go through the
+// scalar sampler (odd film sizes and a pixel count that is no multiple of 8, so the last work
+// item is partial). The diffuse queue shaded eight paths a work item (pt_shade_lanes_diffuse)
+// makes the decisions pt_shade_diffuse makes, path by path: the same light samples
 // accepted, the same continuations and roulette, so Embree traces as many bounce and shadow
 // rays. The directions differ only by the cosine-weighted sample's sine and cosine, a polynomial
 // within 4e-7 of PoCL's sinpi and cospi. In the Cornell box (one material type: the queue
@@ -14,11 +18,15 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <utility>
+#include <vector>
 #include <string>
 
+#include "accel/embree_scene.h"
 #include "integrators/pt/path_tracer.h"
+#include "render/device_scene.h"
 #include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "scene/scene_test_files.h"
@@ -105,6 +113,60 @@ TEST(ShadingLanes, TwoSidedBackAndPointLightShadeAsOnePathAWorkItem) {
   ASSERT_EQ(scene.materials.size(), 2u);
   ASSERT_TRUE(scene.materials[scene.shapes[0].material].twosided);
   expect_lanes_match(scene, "two-sided back", 0.0, 1e-6);
+}
+
+// The camera queue of the first pass (all pixels, sample 0) with `lanes` paths a work item.
+struct CameraQueue {
+  std::vector<GdrRayHit> rays;
+  std::vector<cl_uint> slots;
+  std::vector<GdrPathState> paths;
+};
+
+CameraQueue generate_with(const Scene& scene, int lanes) {
+  Context& ctx = test::default_context();
+  EmbreeScene embree(scene, BuildQuality::High);
+  DeviceScene device_scene(ctx, scene);
+  PtSettings pt;
+  pt.batches = 1;
+  pt.lanes = lanes;
+  PathTracer tracer(RenderInputs{ctx, scene, embree, device_scene}, pt);
+  RenderSettings settings;
+  settings.seed = 5;
+  settings.max_depth = scene.max_depth;
+  const uint32_t pixels = uint32_t(scene.camera.width) * uint32_t(scene.camera.height);
+  tracer.generate(tracer.params(settings, 3, 0, pixels));
+  CameraQueue q{tracer.rays(0).read(), tracer.queue(0).read(), tracer.paths().read()};
+  q.rays.resize(pixels);
+  q.slots.resize(pixels);
+  q.paths.resize(pixels);
+  return q;
+}
+
+TEST(ShadingLanes, CameraRaysAreOnePathAWorkItems) {
+  Scene base = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml");
+  for (int filter : {FILTER_GAUSSIAN, FILTER_TENT, FILTER_BOX}) {
+    for (int border : {0, 1}) {
+      Scene scene = base;
+      scene.camera.width = 37;
+      scene.camera.height = 23;
+      scene.camera.filter = filter;
+      // Mitsuba's defaults: wide enough that the image cuts its border pixels' filters.
+      scene.camera.filter_radius = filter == FILTER_GAUSSIAN ? 2.0f : filter == FILTER_TENT ? 1.0f : 0.5f;
+      scene.camera.sample_border = border;
+      const CameraQueue one = generate_with(scene, 1), eight = generate_with(scene, 8);
+      const std::string what = "filter " + std::to_string(filter) + ", border " + std::to_string(border);
+      ASSERT_EQ(one.rays.size(), eight.rays.size()) << what;
+      size_t differ = 0;  // the rays (write_ray_hit leaves the hit's other fields to the intersection)
+      for (size_t i = 0; i < one.rays.size(); ++i) {
+        differ += std::memcmp(&one.rays[i].ray, &eight.rays[i].ray, sizeof(GdrRay)) != 0 ||
+                  one.rays[i].hit.geomID != eight.rays[i].hit.geomID;
+      }
+      EXPECT_EQ(differ, 0u) << what << ": of " << one.rays.size();
+      EXPECT_EQ(one.slots, eight.slots) << what;
+      EXPECT_EQ(std::memcmp(one.paths.data(), eight.paths.data(), one.paths.size() * sizeof(GdrPathState)), 0)
+          << what;
+    }
+  }
 }
 
 TEST(ShadingLanes, ParameterIsChecked) {

@@ -45,14 +45,15 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
     : in_(in),
       pt_(pt),
       kernels_(in.context, in.scene),
-      generate_(kernels_.make(kProgram, "pt_generate")),
+      lanes_(pt.lanes.value_or(in.context.is_cpu() ? 8 : 1)),
+      generate_(kernels_.make(kProgram, lanes_ == 8 ? "pt_generate_lanes" : "pt_generate")),
       route_(kernels_.make(kProgram, "pt_route")),
       shadow_(kernels_.make(kProgram, "path_shadow_add")),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
   const int batches = batch_count(capacity_, pt_.batches, kMinBatchPaths);
   MaterialQueues::LaneKernels lanes;
-  if (pt_.lanes.value_or(in.context.is_cpu() ? 8 : 1) == 8) lanes = {"pt_shade_lanes", {BSDF_DIFFUSE}};
+  if (lanes_ == 8) lanes = {"pt_shade_lanes", {BSDF_DIFFUSE}};
   for (int i = 0; i < batches; ++i) {
     batches_.emplace_back(in, kernels_, batch_capacity(capacity_, batches), i % Context::kQueues, lanes);
   }
@@ -71,7 +72,7 @@ void PathTracer::generate(Batch& b, const GdrPtParams& params) {
                 std::to_string(b.paths.size()));
   }
   generate_.args(in_.device_scene.camera(), params, b.queues.rays[0], b.queues.slots[0], b.paths)
-      .run(params.pixel_count);
+      .run_lanes(params.pixel_count, size_t(lanes_));
 }
 
 void PathTracer::intersect(Batch& b, int cur, cl_uint active, bool camera) {

@@ -9,9 +9,10 @@
 //   aux       true: also write the first hits' albedo, normal and depth layers
 //   batches   1 or 2 batches a chunk (default 2; 1 where a chunk has too few paths to split;
 //             scripts/bench-pt --batches 1,2 measures both)
-//   lanes     8: the diffuse queue is shaded eight paths a work item (pt_shade_lanes_diffuse,
-//             written for CPU devices, whose compiler widens no shading kernel across work items);
-//             1: one a work item (default: 8 on CPU devices, 1 on GPUs)
+//   lanes     8: camera rays are generated and the diffuse queue is shaded eight paths a work
+//             item (pt_generate_lanes, pt_shade_lanes_diffuse: written for CPU devices, whose
+//             compiler widens no kernel of these across work items); 1: one path a work item
+//             (default: 8 on CPU devices, 1 on GPUs)
 #pragma once
 #include <deque>
 #include <optional>
@@ -91,6 +92,7 @@ class PathTracer : public Integrator {
   RenderInputs in_;
   PtSettings pt_;
   KernelFactory kernels_;
+  int lanes_;  // 1, or 8: the camera rays and the diffuse queue eight paths a work item
   Kernel generate_, route_, shadow_;
   size_t capacity_;  // paths in flight at once, over all batches
   Film film_;
