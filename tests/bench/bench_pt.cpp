@@ -2,6 +2,8 @@
 // generate, shade and shadow kernels' throughput (paths or rays per second) and Embree's closest-
 // hit and occlusion queries on the same queues, for comparison. The queues are those of the
 // first two bounces of a real pass; each benchmark restores its inputs (untimed) before a launch.
+// Generate and shade run one path a work item and eight (the lanes argument: pt_generate_lanes,
+// pt_shade_lanes_diffuse, a CPU device's default).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -35,11 +37,11 @@ struct PtBench {
   std::vector<GdrRay> shadow_occluded;
   cl_uint active[2] = {0, 0}, shadows = 0;
 
-  explicit PtBench(Context& ctx)
+  PtBench(Context& ctx, int lanes)
       : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
         device_scene(std::make_unique<DeviceScene>(ctx, scene)),
-        tracer(std::make_unique<PathTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, one_batch())),
+        tracer(std::make_unique<PathTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, one_batch(lanes))),
         pixels(uint32_t(scene.camera.width) * scene.camera.height) {
     RenderSettings settings;
     settings.seed = 1;
@@ -72,9 +74,10 @@ struct PtBench {
   }
 
   // The stages run on the whole chunk: one batch.
-  static PtSettings one_batch() {
+  static PtSettings one_batch(int lanes) {
     PtSettings s;
     s.batches = 1;
+    s.lanes = lanes;
     return s;
   }
 
@@ -93,22 +96,28 @@ struct PtBench {
   }
 };
 
-PtBench& bench() {
-  static std::unique_ptr<PtBench> b = std::make_unique<PtBench>(test::default_context());
-  return *b;
+// The tracer with `lanes` paths a work item (1 or 8).
+PtBench& bench(int lanes = 8) {
+  static std::unique_ptr<PtBench> b[2];
+  std::unique_ptr<PtBench>& one = b[lanes == 8 ? 1 : 0];
+  if (!one) one = std::make_unique<PtBench>(test::default_context(), lanes);
+  return *one;
 }
+
+std::string lanes_label(int lanes) { return lanes == 8 ? ", eight a work item" : ", one a work item"; }
 
 void label(benchmark::State& state, const char* what) {
   state.SetLabel(std::string(what) + ", cornell-box 256x256 on " + test::default_context().device().name);
 }
 
 void BM_PtGenerate(benchmark::State& state) {
-  PtBench& b = bench();
+  const int lanes = int(state.range(0));
+  PtBench& b = bench(lanes);
   for (auto _ : state) b.tracer->generate(b.params);
   state.SetItemsProcessed(int64_t(state.iterations()) * b.pixels);
-  label(state, "camera paths");
+  label(state, ("camera paths" + lanes_label(lanes)).c_str());
 }
-BENCHMARK(BM_PtGenerate)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PtGenerate)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Embree closest hit of the camera queue (coherent) and of the first bounce queue (incoherent).
 void BM_PtEmbreeIntersect(benchmark::State& state) {
@@ -127,8 +136,8 @@ BENCHMARK(BM_PtEmbreeIntersect)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)
 
 // pt_shade on the intersected camera queue and first bounce queue (emission, NEE, BSDF sampling).
 void BM_PtShade(benchmark::State& state) {
-  PtBench& b = bench();
-  const int depth = int(state.range(0));
+  const int depth = int(state.range(0)), lanes = int(state.range(1));
+  PtBench& b = bench(lanes);
   for (auto _ : state) {
     state.PauseTiming();
     b.restore(depth, true);
@@ -136,9 +145,9 @@ void BM_PtShade(benchmark::State& state) {
     b.tracer->shade(b.params, depth, b.active[depth]);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.active[depth]);
-  label(state, depth == 0 ? "camera-hit paths" : "bounce-hit paths");
+  label(state, ((depth == 0 ? "camera-hit paths" : "bounce-hit paths") + lanes_label(lanes)).c_str());
 }
-BENCHMARK(BM_PtShade)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PtShade)->ArgsProduct({{0, 1}, {1, 8}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Embree occlusion of the first shadow-ray queue.
 void BM_PtEmbreeOccluded(benchmark::State& state) {
