@@ -38,8 +38,9 @@ inline float gaussian_tail(float r, float t) {  // integral over [t, r], 0 <= t 
 // x0 = sqrt 2 erfinv((T + 4 e) / sqrt(pi/2) - erf(2 sqrt 2)) leaves the residual
 // F(x0) - T = -e x0, below 4e-4 of the peak, which gaussian_halley_step removes in closed form.
 // GAUSSIAN_ERFINV_ARGUMENT is the argument of erfinv, also for lanes.
-#define GAUSSIAN_ERFINV_ARGUMENT(r, target) \
-  clamp(((target) / (0.25f * (r)) + 4.0f * GAUSSIAN_OFFSET) / GAUSSIAN_SQRT_HALF_PI - (1.0f - GAUSSIAN_ERFC_CUT), -0.9999999f, 0.9999999f)
+#define GAUSSIAN_ERFINV_ARGUMENT(r, target)                                                               \
+  clamp(((target) / (0.25f * (r)) + 4.0f * GAUSSIAN_OFFSET) / GAUSSIAN_SQRT_HALF_PI - (1.0f - GAUSSIAN_ERFC_CUT), \
+        -0.9999999f, 0.9999999f)
 inline float gaussian_inverse_guess(float r, float target) {
   return 0.25f * r * M_SQRT2_F * erfinv_approx(GAUSSIAN_ERFINV_ARGUMENT(r, target));
 }

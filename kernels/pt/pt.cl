@@ -58,6 +58,27 @@ __kernel void pt_route(GdrPtParams params, uint count, __global const GdrRayHit*
   pt_escaped(&params, &s, &rh, &paths[queue_in[q]], film, counters);
 }
 
+// A queue entry (hit rh of the path st, kept at `path`): a miss adds what it sees where the queue
+// was not routed (`direct`) and gives 0; a hit gives its surface *su and adds what it emits
+// toward the path.
+__attribute__((always_inline)) inline int pt_entry_hit(const GdrPtParams* params, const SceneData* s, int direct,
+                                                       const GdrRayHit* rh, __global const GdrPathState* path,
+                                                       const GdrPathState* st, __global float4* film,
+                                                       __global uint* counters, Surface* su) {
+  if (rh->hit.geomID == GDR_INVALID_ID) {
+    if (direct) pt_escaped(params, s, rh, path, film, counters);
+    return 0;
+  }
+  *su = surface_at(s, rh->hit.primID, rh->hit.u, rh->hit.v);
+#if defined(GDR_LIGHT_AREA)
+  float3 le, wo = -(float3)(rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z);
+  if (path_surface_emission(s, st, vload3(0, st->throughput), su, wo, rh->ray.tfar, params->strategy, &le)) {
+    film_add(film, st->pixel, le, &counters[PT_COUNTER_NONFINITE]);
+  }
+#endif
+  return 1;
+}
+
 // A hit of a material of BSDF type `type`: emission, next-event estimation with MIS, then the
 // BSDF sample that continues the path (Russian roulette). `direct`: the queue was not routed, and
 // a miss is added here. Always inlined: called from one kernel per material, PoCL would otherwise
@@ -84,25 +105,14 @@ __attribute__((always_inline)) inline void pt_shade_hit(GdrPtParams params, uint
   uint slot = queue_in[q];
   GdrPathState st = paths[slot];
   GdrRayHit rh = rays_in[q];
-  if (rh.hit.geomID == GDR_INVALID_ID) {
-    if (direct) pt_escaped(&params, &s, &rh, &paths[slot], film, counters);
-    return;
-  }
-  float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+  Surface su;
+  if (!pt_entry_hit(&params, &s, direct, &rh, &paths[slot], &st, film, counters, &su)) return;
   float3 beta = vload3(0, st.throughput);
-
-  Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
-  float3 wo = -dir;
+  float3 wo = -(float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
   out->p = su.p;
   out->ng = su.ng;
   out->pixel = st.pixel;
   out->slot = slot;
-#if defined(GDR_LIGHT_AREA)
-  float3 le;
-  if (path_surface_emission(&s, &st, beta, &su, wo, rh.ray.tfar, params.strategy, &le)) {
-    film_add(film, st.pixel, le, nonfinite);
-  }
-#endif
   if (path_depth_reached(&st, params.max_depth)) return;
 
   Bsdf b = surface_bsdf_of_type(&s, &su, type);

@@ -1,10 +1,10 @@
 // pt_shade_lanes_diffuse: the diffuse queue shaded eight entries a work item, for CPU devices,
 // where PoCL runs a work group's items one after another in scalar code (README "Tests and
 // benchmarks"). The estimator is pt_shade_hit's for a diffuse hit, from the same random numbers:
-// what touches memory per entry (the queue entry, the surface, emission, the light sample, the
+// what touches memory per entry (the queue entry and its hit: pt_entry_hit; the light sample, the
 // appends) runs lane by lane through the scalar helpers; the arithmetic between (Philox, the
 // frame, the BSDF's value and pdf, MIS, the cosine-weighted sample, Russian roulette) runs on
-// float8 lanes. Included by pt.cl after pt_escaped.
+// float8 lanes. Included by pt.cl after pt_entry_hit.
 #pragma once
 #include "core/lanes.h"
 
@@ -51,19 +51,8 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     uint sl = slot[k];
     GdrPathState st = states[k];
     GdrRayHit rh = rays_in[entry[k]];
-    if (rh.hit.geomID == GDR_INVALID_ID) {
-      if (direct) pt_escaped(&params, &s, &rh, &paths[sl], film, counters);
-      continue;
-    }
-    float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
-    float3 b3 = vload3(0, st.throughput);
-    Surface su = surface_at(&s, rh.hit.primID, rh.hit.u, rh.hit.v);
-#if defined(GDR_LIGHT_AREA)
-    float3 le;
-    if (path_surface_emission(&s, &st, b3, &su, -dir, rh.ray.tfar, params.strategy, &le)) {
-      film_add(film, st.pixel, le, nonfinite);
-    }
-#endif
+    Surface su;
+    if (!pt_entry_hit(&params, &s, direct, &rh, &paths[sl], &st, film, counters, &su)) continue;
     if (path_depth_reached(&st, params.max_depth)) continue;
     Bsdf b = surface_bsdf_of_type(&s, &su, BSDF_DIFFUSE);
     active[k] = -1;  // a mask, as the lane steps' comparisons give
@@ -74,8 +63,8 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     lane_array3_set(&p, k, su.p);
     lane_array3_set(&ng, k, su.ng);
     lane_array3_set(&ns, k, su.ns);
-    lane_array3_set(&wo, k, -dir);
-    lane_array3_set(&beta, k, b3);
+    lane_array3_set(&wo, k, -(float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z));
+    lane_array3_set(&beta, k, vload3(0, st.throughput));
     lane_array3_set(&albedo, k, b.diffuse);
   }
 
