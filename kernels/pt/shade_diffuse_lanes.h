@@ -21,24 +21,13 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
   uint base = get_global_id(0) * LANES;
 
   // Per lane: the hit and the path at it (inactive lanes hold harmless values for the lane steps).
-  // The paths' states are gathered first, all eight loads in flight together: the queue's slots
-  // are far apart in the state buffer, and each load alone would wait on memory.
-  uint slot[LANES], pixel[LANES], sample[LANES], depth[LANES], entry[LANES];
-  GdrPathState states[LANES];
+  uint slot[LANES], pixel[LANES], sample[LANES], depth[LANES];
   int active[LANES];
-  for (int k = 0; k < LANES; ++k) {
-    uint e = base + (uint)k;
-    active[k] = e < count && !path_no_segments(params.max_depth);
-    entry[k] = active[k] ? (direct ? e : sorted[first + e]) : 0u;
-    slot[k] = active[k] ? queue_in[entry[k]] : 0u;
-  }
-  for (int k = 0; k < LANES; ++k) {
-    if (active[k]) states[k] = paths[slot[k]];
-  }
   float twosided[LANES];
   LaneArray3 p, ng, ns, wo, beta, albedo;
   for (int k = 0; k < LANES; ++k) {
-    pixel[k] = sample[k] = depth[k] = 0u;
+    active[k] = 0;
+    slot[k] = pixel[k] = sample[k] = depth[k] = 0u;
     twosided[k] = 0.0f;
     lane_array3_set(&p, k, (float3)(0.0f));
     lane_array3_set(&ng, k, (float3)(0.0f, 0.0f, 1.0f));
@@ -46,16 +35,18 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     lane_array3_set(&wo, k, (float3)(0.0f, 0.0f, 1.0f));
     lane_array3_set(&beta, k, (float3)(0.0f));
     lane_array3_set(&albedo, k, (float3)(0.0f));
-    if (!active[k]) continue;
-    active[k] = 0;
-    uint sl = slot[k];
-    GdrPathState st = states[k];
-    GdrRayHit rh = rays_in[entry[k]];
+    uint e = base + (uint)k;
+    if (e >= count || path_no_segments(params.max_depth)) continue;
+    uint q = direct ? e : sorted[first + e];
+    uint sl = queue_in[q];
+    GdrPathState st = paths[sl];
+    GdrRayHit rh = rays_in[q];
     Surface su;
     if (!pt_entry_hit(&params, &s, direct, &rh, &paths[sl], &st, film, counters, &su)) continue;
     if (path_depth_reached(&st, params.max_depth)) continue;
     Bsdf b = surface_bsdf_of_type(&s, &su, BSDF_DIFFUSE);
     active[k] = -1;  // a mask, as the lane steps' comparisons give
+    slot[k] = sl;
     pixel[k] = st.pixel;
     sample[k] = st.sample;
     depth[k] = (uint)st.depth;
