@@ -35,7 +35,7 @@ class MaterialQueues {
     Kernel* kernel;
     // Entries a work item of the kernel takes (1, or LANES of kernels/core/lanes.h).
     size_t lanes;
-    void run() const { kernel->run_lanes(count, lanes); }
+    void run() const;
   };
 
   // The routing kernel's output: each entry's key (BSDF type, or BSDF_TYPE_COUNT for none); only
