@@ -8,8 +8,8 @@
 
 // Offsets drawn with u for uncut pixels; *served marks the lanes whose offset this is.
 inline float8 gaussian_uncut_offset_lanes(float r, float8 u, int8* served) {
-  // filter_cdf is 0 at -r and 2 gaussian_tail(r, 0) at r: mix(0, that, u).
-  float8 target = 0.0f + (2.0f * gaussian_tail(r, 0.0f) - 0.0f) * u;
+  // sample_filter_axis's target over the uncut range [-r, r].
+  float8 target = mix((float8)(filter_cdf(FILTER_GAUSSIAN, r, -r)), (float8)(filter_cdf(FILTER_GAUSSIAN, r, r)), u);
   float8 y = GAUSSIAN_ERFINV_ARGUMENT(r, target);
   float8 w = ERFINV_W(y), p;
   int8 central = w < 5.0f;

@@ -54,12 +54,16 @@ __attribute__((always_inline)) inline void philox4x32_10_lanes(uint8* w0, uint8*
   *w0 = c0, *w1 = c1, *w2 = c2, *w3 = c3;
 }
 
-// 24-bit mantissa: uniform in [0, 1), never 1.
-inline float rng_to_unit(uint x) { return (float)(x >> 8) * 0x1.0p-24f; }
+// The counter's fourth word ("gdrf") and the key's second, beside the seed.
+#define GDR_RNG_TAG 0x67647266u
+#define GDR_RNG_KEY 0x5eedu
+// 24-bit mantissa: uniform in [0, 1), never 1 (CONVERT: convert_float, or a vector's).
+#define RNG_TO_UNIT(CONVERT, x) (CONVERT((x) >> 8) * 0x1.0p-24f)
+inline float rng_to_unit(uint x) { return RNG_TO_UNIT((float), x); }
 
 // Four uniforms for dimensions 4*block .. 4*block+3 of (pixel, sample).
 inline float4 rng_block(uint seed, uint pixel, uint sample, uint block) {
-  uint4 r = philox4x32_10((uint4)(pixel, sample, block, 0x67647266u /* "gdrf" */), (uint2)(seed, 0x5eedu));
+  uint4 r = philox4x32_10((uint4)(pixel, sample, block, GDR_RNG_TAG), (uint2)(seed, GDR_RNG_KEY));
   return (float4)(rng_to_unit(r.x), rng_to_unit(r.y), rng_to_unit(r.z), rng_to_unit(r.w));
 }
 
@@ -69,13 +73,13 @@ typedef struct {
 } RngBlockLanes;
 
 __attribute__((always_inline)) inline RngBlockLanes rng_block_lanes(uint seed, uint8 pixel, uint8 sample, uint8 block) {
-  uint8 c0 = pixel, c1 = sample, c2 = block, c3 = (uint8)0x67647266u;
-  philox4x32_10_lanes(&c0, &c1, &c2, &c3, seed, 0x5eedu);
+  uint8 c0 = pixel, c1 = sample, c2 = block, c3 = (uint8)GDR_RNG_TAG;
+  philox4x32_10_lanes(&c0, &c1, &c2, &c3, seed, GDR_RNG_KEY);
   RngBlockLanes r;
-  r.x = convert_float8(c0 >> 8) * 0x1.0p-24f;
-  r.y = convert_float8(c1 >> 8) * 0x1.0p-24f;
-  r.z = convert_float8(c2 >> 8) * 0x1.0p-24f;
-  r.w = convert_float8(c3 >> 8) * 0x1.0p-24f;
+  r.x = RNG_TO_UNIT(convert_float8, c0);
+  r.y = RNG_TO_UNIT(convert_float8, c1);
+  r.z = RNG_TO_UNIT(convert_float8, c2);
+  r.w = RNG_TO_UNIT(convert_float8, c3);
   return r;
 }
 

@@ -9,6 +9,12 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
   return isfinite(r) ? 1.0f / (1.0f + r * r) : 0.0f;
 }
 
+// The same on eight lanes (kernels/core/lanes.h).
+inline float8 power_heuristic_lanes(float8 pdf_a, float8 pdf_b) {
+  float8 r = pdf_b / pdf_a;
+  return select((float8)(0.0f), 1.0f / (1.0f + r * r), (pdf_a > 0.0f) & isfinite(r));
+}
+
 // Weight of one path of a gradient-domain pair (base x or offset y) for the technique that found
 // its emitter: the path's own balance weight p / (p + q) between its two techniques (p: the one
 // that found the emitter, q: the other), times the base's share 1 / (1 + r) of the pair under that

@@ -65,8 +65,8 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
   RngBlockLanes ub = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_BSDF(depth8));
 
   // Per lane: the light sample (nee_sample without its side test, which the lane step makes).
-  int sampled[LANES];
-  float light_dist[LANES], light_pdf[LANES], light_delta[LANES];
+  int sampled[LANES], light_delta[LANES];
+  float light_dist[LANES], light_pdf[LANES];
   LaneArray3 light_wi, light_radiance;
   float ul_x[LANES], ul_y[LANES], ul_z[LANES];
   vstore8(ul.x, 0, ul_x);
@@ -77,7 +77,7 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     sampled[k] = 0;
     light_dist[k] = 0.0f;
     light_pdf[k] = 1.0f;
-    light_delta[k] = 0.0f;
+    light_delta[k] = 0;
     lane_array3_set(&light_wi, k, (float3)(0.0f, 0.0f, 1.0f));
     lane_array3_set(&light_radiance, k, (float3)(0.0f));
     if (!active[k] || !nee) continue;
@@ -87,7 +87,7 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     sampled[k] = 1;
     light_dist[k] = ls.dist;
     light_pdf[k] = ls.pdf;
-    light_delta[k] = ls.delta ? 1.0f : 0.0f;
+    light_delta[k] = ls.delta;
     lane_array3_set(&light_wi, k, ls.wi);
     lane_array3_set(&light_radiance, k, ls.radiance);
   }
@@ -110,10 +110,8 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
   float8 cos_pi = select((float8)(0.0f), wi_z * M_1_PI_F, upper);  // diffuse_eval's factor and pdf
   float8 bsdf_pdf = select((float8)(0.0f), fmax(wi_z, 0.0f) * M_1_PI_F, upper);
   float8 lpdf = vload8(0, light_pdf);
-  float8 ratio = bsdf_pdf / lpdf;
-  float8 power = select((float8)(0.0f), 1.0f / (1.0f + ratio * ratio), (lpdf > 0.0f) & isfinite(ratio));
-  int8 unweighted = (vload8(0, light_delta) > 0.0f) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
-  float8 w = select(power, (float8)(1.0f), unweighted);
+  int8 unweighted = (vload8(0, light_delta) != 0) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
+  float8 w = select(power_heuristic_lanes(lpdf, bsdf_pdf), (float8)(1.0f), unweighted);
   Lanes3 c = lanes3_scale(lanes3_mul(lanes3_mul(BETA, lanes3_scale(ALBEDO, cos_pi)), lanes3_load(&light_radiance)),
                           w / lpdf);
   int8 c_positive = shadow_ok & (lanes3_max(c) > 0.0f);

@@ -41,10 +41,9 @@ __kernel void bounce_aos(uint n, uint seed, __global const float4* normal, __glo
 // square_to_uniform_disk_concentric's branches are selects; phi is in units of pi. Buffers: in
 // holds the normal's x, y, z, then the throughput's r, g, b; out the direction, then the throughput.
 #define PROBE_BOUNCE(F, I, U, ids, LOAD, STORE, PHILOX, SINCOSPI, CONVERT)                            \
-  U w0 = ids, w1 = 0u, w2 = 0u, w3 = 0x67647266u; /* rng_block(seed, item, 0, 0) */                \
-  PHILOX(&w0, &w1, &w2, &w3, seed, 0x5eedu);                                                         \
-  F u0 = CONVERT(w0 >> 8) * 0x1.0p-24f, u1 = CONVERT(w1 >> 8) * 0x1.0p-24f,                          \
-    u2 = CONVERT(w2 >> 8) * 0x1.0p-24f;                                                              \
+  U w0 = ids, w1 = 0u, w2 = 0u, w3 = GDR_RNG_TAG; /* rng_block(seed, item, 0, 0) */                \
+  PHILOX(&w0, &w1, &w2, &w3, seed, GDR_RNG_KEY);                                                     \
+  F u0 = RNG_TO_UNIT(CONVERT, w0), u1 = RNG_TO_UNIT(CONVERT, w1), u2 = RNG_TO_UNIT(CONVERT, w2);     \
   F x = 2.0f * u0 - 1.0f, y = 2.0f * u1 - 1.0f;                                                      \
   I wide = fabs(x) > fabs(y);                                                                        \
   F r = select(y, x, wide), ratio = select(x, y, wide) / select(r, (F)(1.0f), r == 0.0f);            \
