@@ -10,29 +10,34 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Normalised cdf of `masses` (uniform when they sum to zero) into out[0 .. masses.size()].
-void write_cdf(const std::vector<double>& masses, float* out) {
+// Walker's alias table of `masses` (uniform when they sum to zero), by Vose's method: entry i at
+// out[2 i] holds the probability of keeping interval i when u n falls in bucket i, and out[2 i + 1]
+// the interval taken otherwise. Bucket i's share of interval j plus the shares other buckets hand
+// to j add up to j's mass.
+void write_alias(const std::vector<double>& masses, float* out) {
+  const size_t n = masses.size();
   double total = 0;
   for (double m : masses) total += m;
-  double acc = 0;
-  out[0] = 0.0f;
-  for (size_t i = 0; i < masses.size(); ++i) {
-    acc += total > 0 ? masses[i] / total : 1.0 / masses.size();
-    out[i + 1] = i + 1 == masses.size() ? 1.0f : static_cast<float>(acc);
+  std::vector<double> scaled(n);
+  std::vector<size_t> small, large;
+  for (size_t i = 0; i < n; ++i) {
+    scaled[i] = total > 0 ? masses[i] * static_cast<double>(n) / total : 1.0;
+    (scaled[i] < 1.0 ? small : large).push_back(i);
   }
-}
-
-// The guide of a cdf over n intervals (shared/environment_table.h): entry j is the interval with
-// cdf[i] <= j / K < cdf[i + 1], found by the kernels' comparison (the first i with
-// cdf[i + 1] > u, the last interval when none).
-void write_guide(const float* cdf, int n, float* out) {
-  const int k = env_table_guide_buckets(n);
-  int i = 0;
-  for (int j = 0; j <= k; ++j) {
-    const float u = static_cast<float>(j) / static_cast<float>(k);
-    while (i < n - 1 && cdf[i + 1] <= u) ++i;
-    out[j] = static_cast<float>(i);
+  while (!small.empty() && !large.empty()) {
+    const size_t s = small.back(), l = large.back();
+    small.pop_back();
+    out[2 * s] = static_cast<float>(scaled[s]);
+    out[2 * s + 1] = static_cast<float>(l);
+    scaled[l] = (scaled[l] + scaled[s]) - 1.0;  // what l has left after filling s's bucket
+    if (scaled[l] < 1.0) {
+      large.pop_back();
+      small.push_back(l);
+    }
   }
+  // What remains is 1 up to rounding: those buckets keep their own interval.
+  for (size_t i : small) out[2 * i] = 1.0f, out[2 * i + 1] = static_cast<float>(i);
+  for (size_t i : large) out[2 * i] = 1.0f, out[2 * i + 1] = static_cast<float>(i);
 }
 
 // Mean of sin(theta) over the latitudes nearer to row r (at theta = pi r / (h - 1)) than to its
@@ -84,7 +89,7 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
       band_mass[b] = 0.5 * (row_sum[b] + row_sum[b + 1]);
       z += band_mass[b];
     }
-    write_cdf(band_mass, table);
+    write_alias(band_mass, table);
     float* sums = table + env_table_row_sums_offset(h);
     for (int r = 0; r < h; ++r) {
       sums[r] = static_cast<float>(row_sum[r] / z);
@@ -94,10 +99,8 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
         interval[c] = 0.5 * (weight[size_t(r) * w + c] + weight[size_t(r) * w + (c + 1) % w]);
         f[c] = static_cast<float>(weight[size_t(r) * w + c] / z);
       }
-      write_cdf(interval, table + env_table_columns_offset(w, h, r));
-      write_guide(table + env_table_columns_offset(w, h, r), w, table + env_table_column_guide_offset(w, h, r));
+      write_alias(interval, table + env_table_aliases_offset(w, h, r));
     }
-    write_guide(table, h - 1, table + env_table_band_guide_offset(w, h));
   }
 }
 

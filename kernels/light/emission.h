@@ -103,11 +103,10 @@ inline int light_emission_sample_index(const SceneData* s, int index, float2 u_p
     case LIGHT_CONSTANT:
     case LIGHT_ENVMAP: {
       // w: the direction toward the environment the light arrives from; it travels along -w.
-      float3 w = environment_sample(s, l, u_dir);
+      float pdf_w;
+      float3 w = environment_sample(s, index, u_dir, &e->le, &pdf_w);
       e->dir = -w;
       e->p = disc_point(vload3(0, l->position) + w * l->scene_radius, e->dir, l->scene_radius, u_pos);
-      float pdf_w;
-      e->le = environment_eval(s, w, &pdf_w);
       e->pdf_dir = e->pmf > 0.0f ? pdf_w / e->pmf : 0.0f;
       e->pdf_pos = infinite_disc_pdf(l);
       break;

@@ -6,7 +6,7 @@
 // interpolation of the four samples around (u, v). The sampler draws from the same bilinear
 // interpolation of the table's weights (shared/environment_table.h): a band between two rows by
 // its mass, v inside it from the linear marginal, one of the band's two rows by its share at that
-// v, a column interval from that row's cdf and u inside it from the linear density there.
+// v, a column interval from that row's alias table and u inside it from the linear density there.
 #pragma once
 #include "core/math.h"
 #include "scene/scene_data.h"
@@ -65,20 +65,20 @@ inline float sample_linear(float u, float a, float b) {
   return fmin(x, 0x1.fffffep-1f);
 }
 
-// Index i with cdf[i] <= u < cdf[i + 1] among n intervals, and u rescaled to [0, 1) inside it;
-// the search runs between the bounds the cdf's guide gives u's bucket.
-inline int sample_cdf(__global const float* cdf, __global const float* guide, int n, float u, float* rescaled) {
-  int k = env_table_guide_buckets(n);
-  int j = clamp((int)(u * (float)k), 0, k - 1);
-  int lo = (int)guide[j], hi = (int)guide[j + 1];
-  while (lo < hi) {
-    int mid = (lo + hi) / 2;
-    if (cdf[mid + 1] <= u) lo = mid + 1;
-    else hi = mid;
+// An interval of n drawn with the alias table `table` (entry j: the probability of keeping j, then
+// the interval taken otherwise), and u rescaled to [0, 1) inside the drawn interval: it is
+// uniform there, whichever bucket gave it.
+inline int sample_alias(__global const float* table, int n, float u, float* rescaled) {
+  float x = u * (float)n;
+  int j = min((int)x, n - 1);
+  float f = fmin(x - (float)j, 0x1.fffffep-1f);
+  float keep = table[2 * j];
+  if (f < keep) {
+    *rescaled = f / keep;
+    return j;
   }
-  float width = cdf[lo + 1] - cdf[lo];
-  *rescaled = width > 0.0f ? clamp((u - cdf[lo]) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
-  return lo;
+  *rescaled = clamp((f - keep) / (1.0f - keep), 0.0f, 0x1.fffffep-1f);
+  return (int)table[2 * j + 1];
 }
 
 // Density, per unit u and v, with which envmap_sample_uv draws uv.
@@ -95,7 +95,7 @@ inline float envmap_uv_pdf(__global const float* table, int w, int h, float2 uv)
 inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
   __global const float* sums = table + env_table_row_sums_offset(h);
   float ub, ur;
-  int band = sample_cdf(table, table + env_table_band_guide_offset(w, h), h - 1, u.y, &ub);
+  int band = sample_alias(table, h - 1, u.y, &ub);
   float a = sums[band], b = sums[band + 1];
   float fr = sample_linear(ub, a, b);
   // At v the band's density is (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised
@@ -111,8 +111,7 @@ inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2
   }
   ur = clamp(ur, 0.0f, 0x1.fffffep-1f);
   float uc;
-  int c = sample_cdf(table + env_table_columns_offset(w, h, row), table + env_table_column_guide_offset(w, h, row), w,
-                     ur, &uc);
+  int c = sample_alias(table + env_table_aliases_offset(w, h, row), w, ur, &uc);
   __global const float* f = table + env_table_weights_offset(w, h, row);
   float fc = sample_linear(uc, f[c], f[c + 1 == w ? 0 : c + 1]);
   float x = ((float)c + fc + 0.5f) / (float)w;

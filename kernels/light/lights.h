@@ -106,17 +106,26 @@ inline float3 environment_eval(const SceneData* s, float3 dir, float* pdf) {
   return vload3(0, l->radiance);
 }
 
-// A direction toward the environment: by the envmap's luminance, or uniform for a constant one.
-inline float3 environment_sample(const SceneData* s, __global const GdrLight* l, float2 u) {
+// A direction toward environment light `index`: by the envmap's weights, or uniform for a
+// constant one; *radiance and *pdf as environment_eval gives them along it, read at the drawn
+// lat-long position rather than at the direction's (which would convert it back).
+inline float3 environment_sample(const SceneData* s, int index, float2 u, float3* radiance, float* pdf) {
+  __global const GdrLight* l = &s->lights[index];
+  float pmf = light_pmf(s, index);
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     __global const GdrTexture* t = &s->textures[l->texture];
-    float3 d = envmap_direction(envmap_sample_uv(s->env_tables + l->distribution_offset, t->width, t->height, u));
+    float2 uv = envmap_sample_uv(s->env_tables + l->distribution_offset, t->width, t->height, u);
+    float3 d = envmap_direction(uv);
+    *pdf = envmap_solid_angle_pdf(s, l, pmf, d, uv);
+    *radiance = envmap_lookup(s, t, uv) * vload3(0, l->radiance);
     float to_world[12];
     copy_matrix(l->to_world, to_world);
     return normalize(xform_vector(to_world, d));
   }
 #endif
+  *pdf = pmf * GDR_INV_4PI;
+  *radiance = vload3(0, l->radiance);
   return sample_uniform_sphere(u);
 }
 
@@ -211,6 +220,11 @@ __attribute__((always_inline)) inline int light_sample(const SceneData* s, int i
                                                        LightSample* ls) {
   int type = s->lights[index].type;
   if (type == LIGHT_AREA) ls->bary = sample_triangle_barycentrics(u);
-  if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) ls->wi = environment_sample(s, &s->lights[index], u);
+  if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) {
+    ls->wi = environment_sample(s, index, u, &ls->radiance, &ls->pdf);
+    ls->dist = INFINITY;
+    ls->delta = 0;
+    return ls->pdf > 0.0f;
+  }
   return light_connect(s, index, p, ls);
 }

@@ -30,7 +30,9 @@ __kernel void environment_sample_rng(SCENE_DATA_ARGS, int light_count, int env, 
   if (i >= n) return;
   SceneData s = scene_data_make(SCENE_DATA_NAMES, light_count, env);
   float4 u = rng_block(seed, 0u, i, 0u);
-  out[i] = (float4)(environment_sample(&s, &s.lights[env], u.xy), 0.0f);
+  float3 radiance;
+  float pdf;
+  out[i] = (float4)(environment_sample(&s, env, u.xy, &radiance, &pdf), 0.0f);
 }
 
 // out[i] = the lat-long position (u, v) of direction dir[i] (light/envmap.h).

@@ -143,11 +143,16 @@ void expect_directions_follow_pdf(EmissionKernels& k, int index, const V3& axis,
   EXPECT_GT(r.p_value, 1e-3) << "light " << index << ": " << report(r);
 }
 
-// Every sample reports the pdfs the pdf functions give, and a finite emission.
-void expect_consistent_pdfs(const EmissionKernels::Samples& got, bool delta_dir) {
+// Every sample reports the pdfs the pdf functions give, and a finite emission. The direction's pdf
+// is checked to 1e-4; for a lat-long map (`latlong`, in its own frame) to 1e-2 within 0.01 rad of
+// its poles (+-y). There a float direction holds its polar angle to only about 1e-7 / sin(theta)
+// (1 - |y| is a few ulps): the pdf function, which reads the angle back from the direction, is
+// off by that much of the map's slope, while the sample reports the density where it drew it.
+void expect_consistent_pdfs(const EmissionKernels::Samples& got, bool delta_dir, bool latlong = false) {
   for (size_t i = 0; i < got.dir.size(); ++i) {
     if (got.le[i].s[3] == 0.0f) continue;
-    if (!delta_dir) ASSERT_NEAR(got.dir[i].s[3], got.check[i].s[0], 1e-4 * got.check[i].s[0]) << "sample " << i;
+    const double tolerance = latlong && std::fabs(got.dir[i].s[1]) > std::cos(0.01) ? 1e-2 : 1e-4;
+    if (!delta_dir) ASSERT_NEAR(got.dir[i].s[3], got.check[i].s[0], tolerance * got.check[i].s[0]) << "sample " << i;
     ASSERT_NEAR(got.pos[i].s[3], got.check[i].s[1], 1e-4 * got.check[i].s[1]) << "sample " << i;
     for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(got.le[i].s[c])) << "sample " << i;
   }
@@ -279,7 +284,7 @@ TEST(EmissionSampling, EnvironmentMapEmitsFromItsSampledDirections) {
   EmissionKernels k(scene);
   int index = k.light_of_type(LIGHT_ENVMAP);
   EmissionKernels::Samples got = k.sample(index, 10u, 200000);
-  expect_consistent_pdfs(got, false);
+  expect_consistent_pdfs(got, false, true);
   expect_uniform_on_disc(scene.lights[index], got);
 }
 

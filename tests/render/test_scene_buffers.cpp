@@ -5,8 +5,10 @@
 // coating table), so that no buffer is empty.
 #include <gtest/gtest.h>
 
-#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "render/device_scene.h"
 #include "shared/environment_table.h"
@@ -77,9 +79,9 @@ TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
   }
 }
 
-// The environment tables follow their shared layout: each cdf starts at 0 and ends at 1, the
-// row sums are those of the rows' weights, and the bilinear interpolant of the weights
-// integrates to 1 over the grid (each band between rows the mean of its two rows' sums).
+// The environment tables follow their shared layout: the row sums are those of the rows'
+// weights, and the bilinear interpolant of the weights integrates to 1 over the grid (each
+// band between rows the mean of its two rows' sums).
 TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   Scene scene = test::envmap_scene();
   SceneArrays a = scene_arrays(test::default_context(), scene);
@@ -89,14 +91,10 @@ TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   const int w = t.width, h = t.height;
   ASSERT_EQ(a.env_tables.size(), size_t(env.distribution_offset + env_table_size(w, h)));
   const float* table = &a.env_tables[env.distribution_offset];
-  EXPECT_EQ(table[0], 0.0f);
-  EXPECT_EQ(table[h - 1], 1.0f);
   const float* sums = table + env_table_row_sums_offset(h);
+  ASSERT_LE(sums + h, table + env_table_aliases_offset(w, h, 0));
   double integral = 0;
   for (int r = 0; r < h; ++r) {
-    const float* cols = table + env_table_columns_offset(w, h, r);
-    EXPECT_EQ(cols[0], 0.0f) << "row " << r;
-    EXPECT_EQ(cols[w], 1.0f) << "row " << r;
     const float* f = table + env_table_weights_offset(w, h, r);
     double sum = 0;
     for (int c = 0; c < w; ++c) {
@@ -110,38 +108,44 @@ TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   EXPECT_NEAR(integral, 1.0, 1e-5);
 }
 
-// Each guide entry j is the interval u = j / K falls in, so every u of bucket j falls between
-// entries j and j + 1: the guided search finds the interval a search of the whole cdf finds.
-// Checked for the band cdf and every row's, at the bucket's ends and 16 points inside each bucket.
-TEST(SceneBuffers, EnvironmentGuidesBoundEachBucketsInterval) {
+// Each alias table draws every interval with its share of the masses: bucket j keeps j with its
+// stored probability and hands the rest to its alias, so interval j's probability is
+// (keep_j + the sum of 1 - keep_i over buckets i aliased to j) / n. Checked for the bands (masses:
+// the mean of their rows' sums) and every row's intervals (the mean of the weights at their ends).
+TEST(SceneBuffers, EnvironmentAliasTablesDrawEachIntervalByItsMass) {
   Scene scene = test::envmap_scene();
   SceneArrays a = scene_arrays(test::default_context(), scene);
   const GdrLight& env = a.lights.back();
   const GdrTexture& t = a.textures[env.texture];
   const int w = t.width, h = t.height;
   const float* table = &a.env_tables[env.distribution_offset];
-  auto check = [](const float* cdf, const float* guide, int n, const std::string& what) {
-    auto interval = [&](float u) {
-      return static_cast<int>(std::upper_bound(cdf + 1, cdf + n, u) - (cdf + 1));
-    };
-    const int k = env_table_guide_buckets(n);
-    ASSERT_GE(k, n);
-    ASSERT_LT(k, 2 * std::max(n, 1));
-    for (int j = 0; j < k; ++j) {
-      const float lo = static_cast<float>(j) / k, hi = static_cast<float>(j + 1) / k;
-      ASSERT_EQ(guide[j], static_cast<float>(interval(lo))) << what << " bucket " << j;
-      for (int m = 0; m <= 16; ++m) {
-        const float u = std::nextafter(lo + (hi - lo) * (m / 16.0f), m == 16 ? 0.0f : 2.0f);
-        const int i = interval(u);
-        ASSERT_LE(guide[j], static_cast<float>(i)) << what << " bucket " << j << " u " << u;
-        ASSERT_GE(guide[j + 1], static_cast<float>(i)) << what << " bucket " << j << " u " << u;
-      }
+  auto check = [](const float* alias, const std::vector<double>& mass, const std::string& what) {
+    const int n = static_cast<int>(mass.size());
+    double total = 0;
+    for (double m : mass) total += m;
+    ASSERT_GT(total, 0.0) << what;
+    std::vector<double> p(n, 0.0);
+    for (int i = 0; i < n; ++i) {
+      const float keep = alias[2 * i], other = alias[2 * i + 1];
+      ASSERT_GE(keep, 0.0f) << what << " bucket " << i;
+      ASSERT_LE(keep, 1.0f) << what << " bucket " << i;
+      ASSERT_EQ(other, std::floor(other)) << what << " bucket " << i;
+      ASSERT_GE(other, 0.0f) << what << " bucket " << i;
+      ASSERT_LT(other, static_cast<float>(n)) << what << " bucket " << i;
+      p[i] += keep / n;
+      p[static_cast<int>(other)] += (1.0 - keep) / n;
     }
+    for (int j = 0; j < n; ++j) EXPECT_NEAR(p[j], mass[j] / total, 1e-6) << what << " interval " << j;
   };
-  check(table, table + env_table_band_guide_offset(w, h), h - 1, "bands");
+  const float* sums = table + env_table_row_sums_offset(h);
+  std::vector<double> bands(h - 1);
+  for (int b = 0; b + 1 < h; ++b) bands[b] = 0.5 * (double(sums[b]) + sums[b + 1]);
+  check(table, bands, "bands");
   for (int r = 0; r < h; ++r) {
-    check(table + env_table_columns_offset(w, h, r), table + env_table_column_guide_offset(w, h, r), w,
-          "row " + std::to_string(r));
+    const float* f = table + env_table_weights_offset(w, h, r);
+    std::vector<double> intervals(w);
+    for (int c = 0; c < w; ++c) intervals[c] = 0.5 * (double(f[c]) + f[(c + 1) % w]);
+    check(table + env_table_aliases_offset(w, h, r), intervals, "row " + std::to_string(r));
   }
 }
 
