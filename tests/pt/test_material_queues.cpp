@@ -3,7 +3,8 @@
 // launches exactly those (counted per kernel in the stats), and every routed hit is shaded by
 // one of them. On the project's diffuse Cornell box (one type: no routing), the glass box
 // (diffuse and dielectric) and the environment scene (diffuse, rough conductor, rough plastic),
-// with the diffuse queue shaded one path and eight paths a work item (pt_shade_lanes_diffuse).
+// with the diffuse queue shaded one path and eight paths a work item (pt_shade_lanes_diffuse; the
+// smooth plastic queue too, pt_shade_lanes_plastic, where a scene has one).
 // The images do not depend on the routing: scripts/render-hashes renders them bit for bit as one
 // shading kernel did.
 #include <gtest/gtest.h>
@@ -23,7 +24,8 @@ namespace {
 
 // The kernel that shades type t's queue.
 std::string shade_kernel(int t, int lanes) {
-  return std::string(lanes == 8 && t == BSDF_DIFFUSE ? "pt_shade_lanes_" : "pt_shade_") + bsdf_type_name(t);
+  const bool laned = lanes == 8 && (t == BSDF_DIFFUSE || t == BSDF_PLASTIC);
+  return std::string(laned ? "pt_shade_lanes_" : "pt_shade_") + bsdf_type_name(t);
 }
 
 void expect_queues_of(const std::string& file, int expected_types, int lanes) {

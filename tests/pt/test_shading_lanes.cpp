@@ -13,7 +13,8 @@
 // refraction can turn that difference into another path: counts within 1e-3 (measured 6e-5),
 // images within 1e-4 (measured 5.5e-6). A two-sided diffuse rectangle seen from behind, lit by a
 // point light and a constant environment (a delta light's unweighted samples, the back side's
-// flip): equal counts, images within 1e-6. Deterministic (seed 9, 4 spp, 64 px films).
+// flip): equal counts, images within 1e-6. The same for the smooth plastic queue (its lanes:
+// pt_shade_lanes_plastic). Deterministic (seed 9, 4 spp, 64 px films).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +26,7 @@
 #include <string>
 
 #include "accel/embree_scene.h"
+#include "image/image_io.h"
 #include "integrators/pt/path_tracer.h"
 #include "render/device_scene.h"
 #include "scene/load_scene.h"
@@ -54,8 +56,8 @@ LanesRender render_with(const Scene& scene, int lanes) {
   r.image = PathTracer(on_device.inputs(), pt).render(s).image;
   r.bounce_rays = stats.count("rays/bounce");
   r.shadow_rays = stats.count("rays/shadow");
-  r.lane_items = stats.count("kernel_items/pt_shade_lanes_diffuse");
-  r.scalar_items = stats.count("kernel_items/pt_shade_diffuse");
+  r.lane_items = stats.count("kernel_items/pt_shade_lanes_diffuse") + stats.count("kernel_items/pt_shade_lanes_plastic");
+  r.scalar_items = stats.count("kernel_items/pt_shade_diffuse") + stats.count("kernel_items/pt_shade_plastic");
   return r;
 }
 
@@ -113,6 +115,41 @@ TEST(ShadingLanes, TwoSidedBackAndPointLightShadeAsOnePathAWorkItem) {
   ASSERT_EQ(scene.materials.size(), 2u);
   ASSERT_TRUE(scene.materials[scene.shapes[0].material].twosided);
   expect_lanes_match(scene, "two-sided back", 0.0, 1e-6);
+}
+
+// Smooth plastic (one-sided, two-sided seen from behind, with a nonlinear, textured base) beside
+// diffuse, under an environment map and a point light: the plastic queue's lanes pick the coating's
+// reflection or the base as the scalar kernel does (both lobes, both delta and rough continuations).
+TEST(ShadingLanes, PlasticShadesAsOnePathAWorkItem) {
+  test::TempFolder folder;
+  Image sky(16, 8, {"R", "G", "B"});
+  for (size_t i = 0; i < sky.pixels.size(); ++i) sky.pixels[i] = i % 29 == 0 ? 30.0f : 0.3f + 0.05f * float(i % 5);
+  write_exr(folder.path("sky.exr"), sky);
+  const std::string file = folder.write("plastic.xml", test::scene_xml(R"(
+    <sensor type="perspective"><float name="fov" value="50"/>
+      <transform name="to_world"><lookat origin="0, 1, 5" target="0, 0.6, 0" up="0, 1, 0"/></transform>
+      <film type="hdrfilm"><integer name="width" value="64"/><integer name="height" value="48"/></film>
+    </sensor>
+    <emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>
+    <emitter type="point"><point name="position" x="1" y="3" z="2"/><rgb name="intensity" value="6"/></emitter>
+    <shape type="sphere"><point name="center" x="-1.1" y="1" z="0"/><float name="radius" value="1"/>
+      <bsdf type="plastic"><rgb name="diffuse_reflectance" value="0.9, 0.3, 0.3"/><float name="int_ior" value="1.9"/></bsdf>
+    </shape>
+    <shape type="sphere"><point name="center" x="1.1" y="1" z="0"/><float name="radius" value="1"/>
+      <bsdf type="plastic"><boolean name="nonlinear" value="true"/>
+        <texture type="checkerboard" name="diffuse_reflectance"><rgb name="color0" value="0.8"/><rgb name="color1" value="0.1, 0.4, 0.7"/></texture>
+      </bsdf>
+    </shape>
+    <shape type="rectangle">
+      <bsdf type="twosided"><bsdf type="plastic"><rgb name="diffuse_reflectance" value="0.5"/></bsdf></bsdf>
+      <transform name="to_world"><scale value="0.6"/><rotate y="1" angle="180"/><translate y="2.3" z="1"/></transform>
+    </shape>
+    <shape type="rectangle"><bsdf type="diffuse"/>
+      <transform name="to_world"><scale value="5"/><rotate x="1" angle="-90"/></transform>
+    </shape>)"));
+  Scene scene = load_scene(file);
+  ASSERT_EQ(scene.materials.size(), 4u);
+  expect_lanes_match(scene, "plastic", 0.0, 1e-6);
 }
 
 // The camera queue of the first pass (all pixels, sample 0) with `lanes` paths a work item.

@@ -53,7 +53,7 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
   const int batches = batch_count(capacity_, pt_.batches, kMinBatchPaths);
   MaterialQueues::LaneKernels lanes;
-  if (lanes_ == 8) lanes = {"pt_shade_lanes", {BSDF_DIFFUSE}};
+  if (lanes_ == 8) lanes = {"pt_shade_lanes", {BSDF_DIFFUSE, BSDF_PLASTIC}};
   for (int i = 0; i < batches; ++i) {
     batches_.emplace_back(in, kernels_, batch_capacity(capacity_, batches), i % Context::kQueues, lanes);
   }

@@ -1,30 +1,31 @@
-// pt_shade_lanes_diffuse: the diffuse queue shaded eight entries a work item, for CPU devices,
+// pt_shade_lanes_<material>: a material queue shaded eight entries a work item, for CPU devices,
 // where PoCL runs a work group's items one after another in scalar code (README "Tests and
-// benchmarks"). The estimator is pt_shade_hit's for a diffuse hit, from the same random numbers:
-// what touches memory per entry (the queue entry and its hit: pt_entry_hit; the light sample, the
-// appends) runs lane by lane through the scalar helpers; the arithmetic between (Philox, the
-// frame, the BSDF's value and pdf, MIS, the cosine-weighted sample, Russian roulette) runs on
-// float8 lanes. Included by pt.cl after pt_entry_hit.
+// benchmarks"); the materials whose BSDF has a lane form (bsdf/bsdf_lanes.h: diffuse, smooth
+// plastic). The estimator is pt_shade_hit's for such a hit, from the same random numbers: what
+// touches memory per entry (the queue entry and its hit: pt_entry_hit; the material, the light
+// sample, the appends) runs lane by lane through the scalar helpers; the arithmetic between
+// (Philox, the frame, the BSDF's value, pdf and sample, MIS, Russian roulette) runs on float8
+// lanes. Included by pt.cl after pt_entry_hit.
 #pragma once
+#include "bsdf/bsdf_lanes.h"
 #include "core/lanes.h"
 
-#if !defined(GDR_BSDF_SELECTED) || defined(GDR_BSDF_DIFFUSE)
-__kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first, int direct,
-                                     __global const uint* sorted, __global const GdrRayHit* rays_in,
-                                     __global const uint* queue_in, __global GdrRayHit* rays_out,
-                                     __global uint* queue_out, __global GdrRay* shadow_rays,
-                                     __global float4* shadow_values, __global GdrPathState* paths,
-                                     __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {
-  __local uint scratch[GROUP_RESERVE_SCRATCH];
+__attribute__((always_inline)) inline void pt_shade_lanes(
+    int type, GdrPtParams params, uint count, uint first, int direct, __global const uint* sorted,
+    __global const GdrRayHit* rays_in, __global const uint* queue_in, __global GdrRayHit* rays_out,
+    __global uint* queue_out, __global GdrRay* shadow_rays, __global float4* shadow_values,
+    __global GdrPathState* paths, __global float4* film, __global uint* counters, __local uint* scratch,
+    const SceneData* sd) {
+  SceneData s = *sd;
   __global uint* nonfinite = &counters[PT_COUNTER_NONFINITE];
-  SceneData s = path_scene(&params, SCENE_DATA_NAMES);
   uint base = get_global_id(0) * LANES;
 
   // Per lane: the hit and the path at it (inactive lanes hold harmless values for the lane steps).
   uint slot[LANES], pixel[LANES], sample[LANES], depth[LANES];
   int active[LANES];
   float twosided[LANES];
-  LaneArray3 p, ng, ns, wo, beta, albedo;
+  LaneArray3 p, ng, ns, wo, beta;
+  BsdfLaneArrays bsdf;
   for (int k = 0; k < LANES; ++k) {
     active[k] = 0;
     slot[k] = pixel[k] = sample[k] = depth[k] = 0u;
@@ -34,7 +35,7 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     lane_array3_set(&ns, k, (float3)(0.0f, 0.0f, 1.0f));
     lane_array3_set(&wo, k, (float3)(0.0f, 0.0f, 1.0f));
     lane_array3_set(&beta, k, (float3)(0.0f));
-    lane_array3_set(&albedo, k, (float3)(0.0f));
+    bsdf_lanes_clear(&bsdf, k);
     uint e = base + (uint)k;
     if (e >= count || path_no_segments(params.max_depth)) continue;
     uint q = direct ? e : sorted[first + e];
@@ -44,19 +45,19 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     Surface su;
     if (!pt_entry_hit(&params, &s, direct, &rh, &paths[sl], &st, film, counters, &su)) continue;
     if (path_depth_reached(&st, params.max_depth)) continue;
-    Bsdf b = surface_bsdf_of_type(&s, &su, BSDF_DIFFUSE);
+    Bsdf b = surface_bsdf_of_type(&s, &su, type);
     active[k] = -1;  // a mask, as the lane steps' comparisons give
     slot[k] = sl;
     pixel[k] = st.pixel;
     sample[k] = st.sample;
     depth[k] = (uint)st.depth;
-    twosided[k] = b.twosided ? 1.0f : 0.0f;
+    twosided[k] = b.twosided ? 1.0f : 0.0f;  // opaque types: bsdf_flip_side is this test
+    bsdf_lanes_set(&bsdf, k, &b);
     lane_array3_set(&p, k, su.p);
     lane_array3_set(&ng, k, su.ng);
     lane_array3_set(&ns, k, su.ns);
     lane_array3_set(&wo, k, -(float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z));
     lane_array3_set(&beta, k, vload3(0, st.throughput));
-    lane_array3_set(&albedo, k, b.diffuse);
   }
 
   // The light and BSDF blocks of every lane's numbers (path_state_sampler: no primary samples).
@@ -93,27 +94,27 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
   }
 
   // Lanes: next-event estimation's contribution, then the BSDF sample and roulette.
-  Lanes3 NG = lanes3_load(&ng), BETA = lanes3_load(&beta), ALBEDO = lanes3_load(&albedo);
+  Lanes3 NG = lanes3_load(&ng), BETA = lanes3_load(&beta);
+  BsdfLanes B = bsdf_lanes_load(&bsdf);
   FrameLanes frame = frame_lanes_from_normal(lanes3_load(&ns));
   Lanes3 wo_local = frame_lanes_to_local(&frame, lanes3_load(&wo));
-  // bsdf_flip_side: a two-sided diffuse surface seen from below shades as from above.
+  // bsdf_flip_side: a two-sided surface seen from below shades as from above.
   int8 flip = (vload8(0, twosided) > 0.0f) & (wo_local.z < 0.0f);
   float8 flip_sign = select((float8)(1.0f), (float8)(-1.0f), flip);
   Lanes3 wo_n = lanes3_normalize_or_zero(wo_local);
-  float8 wo_z = wo_n.z * flip_sign;
+  wo_n.z *= flip_sign;
 
   Lanes3 LWI = lanes3_load(&light_wi);
   Lanes3 wi_local = frame_lanes_to_local(&frame, LWI);
   int8 shadow_ok = (vload8(0, sampled) != 0) & (lanes3_dot(LWI, NG) * wi_local.z > 0.0f);
-  float8 wi_z = lanes3_normalize_or_zero(wi_local).z * flip_sign;
-  int8 upper = (wo_z > 0.0f) & (wi_z > 0.0f);
-  float8 cos_pi = select((float8)(0.0f), wi_z * M_1_PI_F, upper);  // diffuse_eval's factor and pdf
-  float8 bsdf_pdf = select((float8)(0.0f), fmax(wi_z, 0.0f) * M_1_PI_F, upper);
+  Lanes3 wi_n = lanes3_normalize_or_zero(wi_local);
+  wi_n.z *= flip_sign;
+  float8 bsdf_pdf;
+  Lanes3 f = bsdf_lanes_eval(type, &B, wo_n, wi_n, &bsdf_pdf);
   float8 lpdf = vload8(0, light_pdf);
   int8 unweighted = (vload8(0, light_delta) != 0) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
   float8 w = select(power_heuristic_lanes(lpdf, bsdf_pdf), (float8)(1.0f), unweighted);
-  Lanes3 c = lanes3_scale(lanes3_mul(lanes3_mul(BETA, lanes3_scale(ALBEDO, cos_pi)), lanes3_load(&light_radiance)),
-                          w / lpdf);
+  Lanes3 c = lanes3_scale(lanes3_mul(lanes3_mul(BETA, f), lanes3_load(&light_radiance)), w / lpdf);
   int8 c_positive = shadow_ok & (lanes3_max(c) > 0.0f);
   LaneArray3 shadow_value;
   lanes3_store(c, &shadow_value);
@@ -121,13 +122,12 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
   vstore8(c_positive & lanes3_finite(c), 0, shadow);
   vstore8(c_positive & ~lanes3_finite(c), 0, shadow_nonfinite);
 
-  // bsdf_sample of the diffuse lobe from ub.yz, then path_continue's side test and roulette.
-  Lanes3 wi_s = square_to_cosine_hemisphere_lanes(ub.y, ub.z);
-  int8 sample_ok = (lanes3_dot(wo_n, wo_n) != 0.0f) & (wo_z > 0.0f) & (wi_s.z > 0.0f);
-  float8 pdf = fmax(wi_s.z, 0.0f) * M_1_PI_F;
+  // bsdf_sample from ub.xyz, then path_continue's side test and roulette.
+  Lanes3 wi_s, weight;
+  float8 pdf;
+  int8 delta;
+  int8 sample_ok = bsdf_lanes_sample(type, &B, wo_n, ub.x, ub.y, ub.z, &wi_s, &weight, &pdf, &delta);
   wi_s.z *= flip_sign;
-  Lanes3 weight = {fmax(ALBEDO.x, 0.0f), fmax(ALBEDO.y, 0.0f), fmax(ALBEDO.z, 0.0f)};
-  sample_ok &= lanes3_finite(ALBEDO) & (lanes3_max(weight) > 0.0f);
   Lanes3 wi = frame_lanes_to_world(&frame, wi_s);
   sample_ok &= lanes3_dot(wi, NG) * wi_s.z > 0.0f;
   Lanes3 t = lanes3_mul(BETA, weight);
@@ -144,9 +144,10 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
   lanes3_store(wi, &next_wi);
   float next_pdf[LANES];
   vstore8(pdf, 0, next_pdf);
-  int next[LANES], next_nonfinite[LANES];
+  int next[LANES], next_nonfinite[LANES], next_delta[LANES];
   vstore8(survives, 0, next);
   vstore8(vload8(0, active) & sample_ok & ~t_finite, 0, next_nonfinite);
+  vstore8(delta, 0, next_delta);
 
   // Per lane: the work item's appends, reserved with the group's.
   uint want[2] = {0u, 0u};
@@ -172,7 +173,7 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
       st.pixel = pixel[k];
       st.sample = sample[k];
       st.depth = (int)depth[k] + 1;
-      st.flags = 0;  // a diffuse sample is never a delta lobe
+      st.flags = next_delta[k] ? PATH_FLAG_SPECULAR : 0;  // path_advance
       paths[slot[k]] = st;
       queue_out[want[1]] = slot[k];
       spawn_ray(&rays_out[want[1]], pk, ngk, lane_array3_get(&next_wi, k), slot[k]);
@@ -180,4 +181,23 @@ __kernel void pt_shade_lanes_diffuse(GdrPtParams params, uint count, uint first,
     }
   }
 }
+
+// One kernel per material type with a lane form, compiled where the scene has it.
+#define PT_SHADE_LANES_KERNEL(name, TYPE)                                                                    \
+  __kernel void pt_shade_lanes_##name(GdrPtParams params, uint count, uint first, int direct,              \
+                                      __global const uint* sorted, __global const GdrRayHit* rays_in,      \
+                                      __global const uint* queue_in, __global GdrRayHit* rays_out,         \
+                                      __global uint* queue_out, __global GdrRay* shadow_rays,              \
+                                      __global float4* shadow_values, __global GdrPathState* paths,        \
+                                      __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {   \
+    __local uint scratch[GROUP_RESERVE_SCRATCH];                                                           \
+    SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                   \
+    pt_shade_lanes(TYPE, params, count, first, direct, sorted, rays_in, queue_in, rays_out, queue_out,     \
+                   shadow_rays, shadow_values, paths, film, counters, scratch, &s);                        \
+  }
+#if !defined(GDR_BSDF_SELECTED) || defined(GDR_BSDF_DIFFUSE)
+PT_SHADE_LANES_KERNEL(diffuse, BSDF_DIFFUSE)
+#endif
+#if !defined(GDR_BSDF_SELECTED) || defined(GDR_BSDF_PLASTIC)
+PT_SHADE_LANES_KERNEL(plastic, BSDF_PLASTIC)
 #endif
