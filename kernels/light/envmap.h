@@ -91,29 +91,56 @@ inline float envmap_uv_pdf(__global const float* table, int w, int h, float2 uv)
   return mix(top, bottom, g.fr) * (float)w * (float)(h - 1);
 }
 
-// A lat-long position drawn in proportion to the bilinear interpolation of the table's weights.
-inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
+// envmap_sample_uv in three steps, each ending at the table read the next one needs (the band's
+// row sums, the row's alias entry, the column's weights): a kernel that draws for several lanes
+// runs each step over all its lanes before the next (light/light_lanes.h), so that their reads
+// overlap where one draw's would wait one after another.
+typedef struct EnvDraw {
+  int band, row, column;
+  float fr;  // v inside the band
+  float u;   // the number left for the next step: the row's column, then u inside the column
+} EnvDraw;
+
+// The band, v inside it, and which of its two rows gives u.
+inline EnvDraw envmap_draw_row(__global const float* table, int h, float2 u) {
   __global const float* sums = table + env_table_row_sums_offset(h);
-  float ub, ur;
-  int band = sample_alias(table, h - 1, u.y, &ub);
-  float a = sums[band], b = sums[band + 1];
-  float fr = sample_linear(ub, a, b);
+  EnvDraw d;
+  float ub;
+  d.band = sample_alias(table, h - 1, u.y, &ub);
+  float a = sums[d.band], b = sums[d.band + 1];
+  d.fr = sample_linear(ub, a, b);
   // At v the band's density is (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised
   // densities: pick row band + i in proportion to its term, then u from that row.
-  float share = (1.0f - fr) * a, total = share + fr * b;
+  float share = (1.0f - d.fr) * a, total = share + d.fr * b;
   float p0 = total > 0.0f ? share / total : (a > 0.0f ? 1.0f : 0.0f);
-  int row = band;
+  d.row = d.band;
   if (u.x < p0) {
-    ur = u.x / p0;
+    d.u = u.x / p0;
   } else {
-    row = band + 1;
-    ur = (u.x - p0) / (1.0f - p0);
+    d.row = d.band + 1;
+    d.u = (u.x - p0) / (1.0f - p0);
   }
-  ur = clamp(ur, 0.0f, 0x1.fffffep-1f);
-  float uc;
-  int c = sample_alias(table + env_table_aliases_offset(w, h, row), w, ur, &uc);
-  __global const float* f = table + env_table_weights_offset(w, h, row);
-  float fc = sample_linear(uc, f[c], f[c + 1 == w ? 0 : c + 1]);
+  d.u = clamp(d.u, 0.0f, 0x1.fffffep-1f);
+  return d;
+}
+
+// The row's column interval, from its alias table.
+inline void envmap_draw_column(__global const float* table, int w, int h, EnvDraw* d) {
+  d->column = sample_alias(table + env_table_aliases_offset(w, h, d->row), w, d->u, &d->u);
+}
+
+// u inside the column, from the weights at its ends: the drawn lat-long position.
+inline float2 envmap_draw_uv(__global const float* table, int w, int h, const EnvDraw* d) {
+  __global const float* f = table + env_table_weights_offset(w, h, d->row);
+  int c = d->column;
+  float fc = sample_linear(d->u, f[c], f[c + 1 == w ? 0 : c + 1]);
   float x = ((float)c + fc + 0.5f) / (float)w;
-  return (float2)(x >= 1.0f ? x - 1.0f : x, ((float)band + fr) / (float)(h - 1));
+  return (float2)(x >= 1.0f ? x - 1.0f : x, ((float)d->band + d->fr) / (float)(h - 1));
+}
+
+// A lat-long position drawn in proportion to the bilinear interpolation of the table's weights.
+inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
+  EnvDraw d = envmap_draw_row(table, h, u);
+  envmap_draw_column(table, w, h, &d);
+  return envmap_draw_uv(table, w, h, &d);
 }

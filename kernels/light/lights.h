@@ -54,13 +54,18 @@ inline float3 envmap_local_direction(__global const GdrLight* l, float3 dir) {
   return normalize(xform_vector(to_local, dir));
 }
 
-// Solid-angle pdf of sampling local direction d (at lat-long position uv) from the map of light
-// l, chosen with probability pmf. d(solid angle) = 2 pi^2 sin(theta) du dv.
-inline float envmap_solid_angle_pdf(const SceneData* s, __global const GdrLight* l, float pmf, float3 d, float2 uv) {
+// Solid-angle pdf of local direction d of a map chosen with probability pmf, from its density
+// p_uv per unit u and v there (envmap_uv_pdf). d(solid angle) = 2 pi^2 sin(theta) du dv.
+inline float envmap_solid_angle(float pmf, float3 d, float p_uv) {
   float sin_theta = sqrt(d.x * d.x + d.z * d.z);
+  return sin_theta > 0.0f ? pmf * p_uv / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
+}
+
+// Solid-angle pdf of sampling local direction d (at lat-long position uv) from the map of light
+// l, chosen with probability pmf.
+inline float envmap_solid_angle_pdf(const SceneData* s, __global const GdrLight* l, float pmf, float3 d, float2 uv) {
   __global const GdrTexture* t = &s->textures[l->texture];
-  float p = envmap_uv_pdf(s->env_tables + l->distribution_offset, t->width, t->height, uv);
-  return sin_theta > 0.0f ? pmf * p / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
+  return envmap_solid_angle(pmf, d, envmap_uv_pdf(s->env_tables + l->distribution_offset, t->width, t->height, uv));
 }
 #endif
 
@@ -106,22 +111,34 @@ inline float3 environment_eval(const SceneData* s, float3 dir, float* pdf) {
   return vload3(0, l->radiance);
 }
 
+#if defined(GDR_LIGHT_ENVMAP)
+// The direction toward envmap light l (chosen with probability pmf) at the lat-long position uv
+// it drew, from what its tables hold there (p_uv: envmap_uv_pdf; texel: envmap_lookup), with
+// *radiance and *pdf as environment_eval gives them along it: read at uv rather than at the
+// direction's position (which would convert it back).
+inline float3 envmap_sample_at(__global const GdrLight* l, float pmf, float2 uv, float p_uv, float3 texel,
+                               float3* radiance, float* pdf) {
+  float3 d = envmap_direction(uv);
+  *pdf = envmap_solid_angle(pmf, d, p_uv);
+  *radiance = texel * vload3(0, l->radiance);
+  float to_world[12];
+  copy_matrix(l->to_world, to_world);
+  return normalize(xform_vector(to_world, d));
+}
+#endif
+
 // A direction toward environment light `index`: by the envmap's weights, or uniform for a
-// constant one; *radiance and *pdf as environment_eval gives them along it, read at the drawn
-// lat-long position rather than at the direction's (which would convert it back).
+// constant one; *radiance and *pdf as environment_eval gives them along it.
 inline float3 environment_sample(const SceneData* s, int index, float2 u, float3* radiance, float* pdf) {
   __global const GdrLight* l = &s->lights[index];
   float pmf = light_pmf(s, index);
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     __global const GdrTexture* t = &s->textures[l->texture];
-    float2 uv = envmap_sample_uv(s->env_tables + l->distribution_offset, t->width, t->height, u);
-    float3 d = envmap_direction(uv);
-    *pdf = envmap_solid_angle_pdf(s, l, pmf, d, uv);
-    *radiance = envmap_lookup(s, t, uv) * vload3(0, l->radiance);
-    float to_world[12];
-    copy_matrix(l->to_world, to_world);
-    return normalize(xform_vector(to_world, d));
+    __global const float* table = s->env_tables + l->distribution_offset;
+    float2 uv = envmap_sample_uv(table, t->width, t->height, u);
+    return envmap_sample_at(l, pmf, uv, envmap_uv_pdf(table, t->width, t->height, uv), envmap_lookup(s, t, uv),
+                            radiance, pdf);
   }
 #endif
   *pdf = pmf * GDR_INV_4PI;

@@ -3,12 +3,14 @@
 // benchmarks"); the materials whose BSDF has a lane form (bsdf/bsdf_lanes.h: diffuse, smooth
 // plastic). The estimator is pt_shade_hit's for such a hit, from the same random numbers: what
 // touches memory per entry (the queue entry and its hit: pt_entry_hit; the material, the light
-// sample, the appends) runs lane by lane through the scalar helpers; the arithmetic between
+// sample, the appends) runs lane by lane through the scalar helpers (an environment map's
+// samples step by step over the lanes: light/light_lanes.h); the arithmetic between
 // (Philox, the frame, the BSDF's value, pdf and sample, MIS, Russian roulette) runs on float8
 // lanes. Included by pt.cl after pt_entry_hit.
 #pragma once
 #include "bsdf/bsdf_lanes.h"
 #include "core/lanes.h"
+#include "light/light_lanes.h"
 
 __attribute__((always_inline)) inline void pt_shade_lanes(
     int type, GdrPtParams params, uint count, uint first, int direct, __global const uint* sorted,
@@ -65,8 +67,8 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   RngBlockLanes ul = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_LIGHT(depth8));
   RngBlockLanes ub = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_BSDF(depth8));
 
-  // Per lane: the light sample (nee_sample without its side test, which the lane step makes).
-  int sampled[LANES], light_delta[LANES];
+  // The light samples (nee_sample without its side test, which the lane step makes).
+  int sampled[LANES], light_delta[LANES], nee_lane[LANES];
   float light_dist[LANES], light_pdf[LANES];
   LaneArray3 light_wi, light_radiance;
   float ul_x[LANES], ul_y[LANES], ul_z[LANES];
@@ -74,23 +76,15 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   vstore8(ul.y, 0, ul_y);
   vstore8(ul.z, 0, ul_z);
   int nee = params.strategy != PT_STRATEGY_BSDF && s.light_count > 0;
+  for (int k = 0; k < LANES; ++k) nee_lane[k] = active[k] && nee;
+  LightSample ls[LANES];
+  light_sample_lanes(&s, nee_lane, ul_x, ul_y, ul_z, &p, sampled, ls);
   for (int k = 0; k < LANES; ++k) {
-    sampled[k] = 0;
-    light_dist[k] = 0.0f;
-    light_pdf[k] = 1.0f;
-    light_delta[k] = 0;
-    lane_array3_set(&light_wi, k, (float3)(0.0f, 0.0f, 1.0f));
-    lane_array3_set(&light_radiance, k, (float3)(0.0f));
-    if (!active[k] || !nee) continue;
-    LightSample ls;
-    int light = light_select(&s, ul_x[k]);
-    if (!light_sample(&s, light, lane_array3_get(&p, k), (float2)(ul_y[k], ul_z[k]), &ls)) continue;
-    sampled[k] = 1;
-    light_dist[k] = ls.dist;
-    light_pdf[k] = ls.pdf;
-    light_delta[k] = ls.delta;
-    lane_array3_set(&light_wi, k, ls.wi);
-    lane_array3_set(&light_radiance, k, ls.radiance);
+    light_dist[k] = sampled[k] ? ls[k].dist : 0.0f;
+    light_pdf[k] = sampled[k] ? ls[k].pdf : 1.0f;
+    light_delta[k] = sampled[k] ? ls[k].delta : 0;
+    lane_array3_set(&light_wi, k, sampled[k] ? ls[k].wi : (float3)(0.0f, 0.0f, 1.0f));
+    lane_array3_set(&light_radiance, k, sampled[k] ? ls[k].radiance : (float3)(0.0f));
   }
 
   // Lanes: next-event estimation's contribution, then the BSDF sample and roulette.
