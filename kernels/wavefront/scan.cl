@@ -3,25 +3,50 @@
 // SCAN_BLOCK items (each block scanned in local memory, the block sums scanned the same way and
 // added back), the compaction it enables, and a counting sort by key whose buckets are then put
 // in index order, so that the result does not depend on the order atomics ran in.
-#define SCAN_BLOCK 256
+#define SCAN_GROUP 256                     // work items a block
+#define SCAN_RUN 16                        // consecutive items each one sums serially
+#define SCAN_BLOCK (SCAN_GROUP * SCAN_RUN)  // items a block
+// Position of block item i in local memory: one word of padding every 32, so that neither the
+// coalesced copies (consecutive items) nor the runs (a stride of SCAN_RUN) meet in a GPU's banks.
+#define SCAN_AT(i) ((i) + ((i) >> 5))
 
 // Work group g scans items [g * SCAN_BLOCK, (g + 1) * SCAN_BLOCK) of data in place (exclusive)
-// and writes their total to sums[g]. Launched with local size SCAN_BLOCK.
+// and writes their total to sums[g]. Launched with local size SCAN_GROUP. Each work item sums a
+// run of SCAN_RUN items serially and only the runs' totals take the parallel scan's steps (on a
+// CPU device, whose work items run one after another between barriers, those steps cost as many
+// passes over the group as they have barriers); reads and writes stay coalesced through tmp.
 __kernel void scan_blocks(__global uint* data, uint n, __global uint* sums) {
-  __local uint tmp[SCAN_BLOCK];
-  uint l = get_local_id(0), g = get_group_id(0), i = g * SCAN_BLOCK + l;
-  uint v = i < n ? data[i] : 0u;
-  tmp[l] = v;
+  __local uint tmp[SCAN_AT(SCAN_BLOCK)];
+  __local uint runs[SCAN_GROUP];
+  uint l = get_local_id(0), first = get_group_id(0) * SCAN_BLOCK;
+  for (uint j = 0; j < SCAN_RUN; ++j) {
+    uint i = first + j * SCAN_GROUP + l;
+    tmp[SCAN_AT(j * SCAN_GROUP + l)] = i < n ? data[i] : 0u;
+  }
   barrier(CLK_LOCAL_MEM_FENCE);
-  // Hillis-Steele inclusive scan: log2(SCAN_BLOCK) steps.
-  for (uint offset = 1; offset < SCAN_BLOCK; offset <<= 1) {
-    uint add = l >= offset ? tmp[l - offset] : 0u;
+  uint total = 0u;
+  for (uint j = 0; j < SCAN_RUN; ++j) {
+    uint v = tmp[SCAN_AT(l * SCAN_RUN + j)];
+    tmp[SCAN_AT(l * SCAN_RUN + j)] = total;
+    total += v;
+  }
+  runs[l] = total;
+  barrier(CLK_LOCAL_MEM_FENCE);
+  // Hillis-Steele inclusive scan of the runs' totals: log2(SCAN_GROUP) steps.
+  for (uint offset = 1; offset < SCAN_GROUP; offset <<= 1) {
+    uint add = l >= offset ? runs[l - offset] : 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
-    tmp[l] += add;
+    runs[l] += add;
     barrier(CLK_LOCAL_MEM_FENCE);
   }
-  if (i < n) data[i] = tmp[l] - v;
-  if (l == SCAN_BLOCK - 1) sums[g] = tmp[l];
+  uint before = runs[l] - total;
+  for (uint j = 0; j < SCAN_RUN; ++j) tmp[SCAN_AT(l * SCAN_RUN + j)] += before;
+  barrier(CLK_LOCAL_MEM_FENCE);
+  for (uint j = 0; j < SCAN_RUN; ++j) {
+    uint i = first + j * SCAN_GROUP + l;
+    if (i < n) data[i] = tmp[SCAN_AT(j * SCAN_GROUP + l)];
+  }
+  if (l == SCAN_GROUP - 1) sums[get_group_id(0)] = runs[l];
 }
 
 // Adds the scanned block sums to the items of their blocks.

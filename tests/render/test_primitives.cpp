@@ -1,6 +1,7 @@
 // The device primitives (render/wavefront/primitives.h) against their definitions on the host:
-// exclusive scan, compaction, selection by key and the stable sort by key, at sizes around the scan's block of
-// 256 and across its levels (256^2 items need two); the work-groups' reservations of queue slots
+// exclusive scan, compaction, selection by key and the stable sort by key, at sizes around a work
+// item's run of 16, the scan's block of 4096 and across its levels (65537 items take two, 4096^2 + 1
+// three: the scan alone takes those); the work-groups' reservations of queue slots
 // (wavefront/group_reserve.h) and the stats counters' per-work-group copies (device_counters.h).
 #include <gtest/gtest.h>
 
@@ -15,7 +16,7 @@
 namespace gdr {
 namespace {
 
-const size_t kSizes[] = {1, 2, 255, 256, 257, 1000, 65536, 65537, 300000};
+const size_t kSizes[] = {1, 2, 15, 17, 255, 256, 257, 1000, 4095, 4096, 4097, 65536, 65537, 300000};
 
 std::vector<cl_uint> random_values(size_t n, cl_uint below, uint32_t seed) {
   std::mt19937 rng(seed);
@@ -28,7 +29,9 @@ std::vector<cl_uint> random_values(size_t n, cl_uint below, uint32_t seed) {
 TEST(DevicePrimitives, ExclusiveScan) {
   Context& ctx = test::default_context();
   DevicePrimitives prim(ctx);
-  for (size_t n : kSizes) {
+  std::vector<size_t> sizes(std::begin(kSizes), std::end(kSizes));
+  sizes.push_back(size_t{4096} * 4096 + 1);
+  for (size_t n : sizes) {
     std::vector<cl_uint> v = random_values(n, 8, uint32_t(n));
     Buffer<cl_uint> b(ctx, v);
     cl_uint total = prim.exclusive_scan(b, n);
