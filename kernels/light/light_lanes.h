@@ -1,7 +1,7 @@
 // Light samples for kernels that shade several lanes (pt/shade_lanes.h): light_sample lane by
-// lane, except that the environment map's draws go step by step over all the lanes that chose
-// it (EnvDraw, light/envmap.h), so that the lanes' table reads overlap where one draw's reads
-// would wait one after another.
+// lane, except that an environment map's steps go over all the lanes that chose it before the next
+// step (its draw: EnvDraw, light/envmap.h; then its pdf, its texels), so that the lanes' table
+// reads overlap where one lane's reads would wait one after another.
 #pragma once
 #include "core/lanes.h"
 #include "light/lights.h"

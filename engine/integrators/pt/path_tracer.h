@@ -9,10 +9,10 @@
 //   aux       true: also write the first hits' albedo, normal and depth layers
 //   batches   1 or 2 batches a chunk (default 2; 1 where a chunk has too few paths to split;
 //             scripts/bench-pt --batches 1,2 measures both)
-//   lanes     8: camera rays are generated and the diffuse queue is shaded eight paths a work
-//             item (pt_generate_lanes, pt_shade_lanes_diffuse: written for CPU devices, whose
-//             compiler widens no kernel of these across work items); 1: one path a work item
-//             (default: 8 on CPU devices, 1 on GPUs)
+//   lanes     8: camera rays are generated and the diffuse and smooth plastic queues shaded
+//             eight paths a work item (pt_generate_lanes, pt_shade_lanes_<material>: written for
+//             CPU devices, whose compiler widens no kernel of these across work items); 1: one
+//             path a work item (default: 8 on CPU devices, 1 on GPUs)
 #pragma once
 #include <deque>
 #include <optional>
