@@ -63,22 +63,6 @@ inline float8 plastic_specular_probability_lanes(const BsdfLanes* b, float8 refl
   return select((float8)(0.0f), ps / (ps + pd), ps + pd > 0.0f);
 }
 
-inline Lanes3 lanes3_finite_or_zero(Lanes3 v) {
-  int8 ok = lanes3_finite(v);
-  Lanes3 r = {select((float8)(0.0f), v.x, ok), select((float8)(0.0f), v.y, ok), select((float8)(0.0f), v.z, ok)};
-  return r;
-}
-
-inline Lanes3 lanes3_fmax0(Lanes3 v) {
-  Lanes3 r = {fmax(v.x, 0.0f), fmax(v.y, 0.0f), fmax(v.z, 0.0f)};
-  return r;
-}
-
-inline Lanes3 lanes3_select(Lanes3 a, Lanes3 b, int8 take_b) {
-  Lanes3 r = {select(a.x, b.x, take_b), select(a.y, b.y, take_b), select(a.z, b.z, take_b)};
-  return r;
-}
-
 // bsdf_eval (f |cos wi|) and, in *pdf, bsdf_pdf of wo and wi.
 inline Lanes3 bsdf_lanes_eval(int type, const BsdfLanes* b, Lanes3 wo, Lanes3 wi, float8* pdf) {
   int8 upper = (wo.z > 0.0f) & (wi.z > 0.0f);

@@ -43,6 +43,22 @@ inline Lanes3 lanes3_scale(Lanes3 a, float8 s) {
 inline float8 lanes3_dot(Lanes3 a, Lanes3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline float8 lanes3_max(Lanes3 a) { return fmax(a.x, fmax(a.y, a.z)); }
 inline int8 lanes3_finite(Lanes3 a) { return isfinite(a.x) & isfinite(a.y) & isfinite(a.z); }
+// finite_or_zero3, fmax(v, 0), and a lane-wise select (b where take_b).
+inline Lanes3 lanes3_finite_or_zero(Lanes3 v) {
+  int8 ok = lanes3_finite(v);
+  Lanes3 r = {select((float8)(0.0f), v.x, ok), select((float8)(0.0f), v.y, ok), select((float8)(0.0f), v.z, ok)};
+  return r;
+}
+
+inline Lanes3 lanes3_fmax0(Lanes3 v) {
+  Lanes3 r = {fmax(v.x, 0.0f), fmax(v.y, 0.0f), fmax(v.z, 0.0f)};
+  return r;
+}
+
+inline Lanes3 lanes3_select(Lanes3 a, Lanes3 b, int8 take_b) {
+  Lanes3 r = {select(a.x, b.x, take_b), select(a.y, b.y, take_b), select(a.z, b.z, take_b)};
+  return r;
+}
 
 // frame_from_normal's basis around unit normals n, and the changes of frame.
 typedef struct {
