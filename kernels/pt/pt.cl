@@ -151,16 +151,18 @@ __attribute__((always_inline)) inline void pt_shade_hit(GdrPtParams params, uint
   out->wi = wi;
 }
 
+// The arguments of a material queue's shading kernel (pt_shade_<material>, pt_shade_lanes_<material>).
+#define PT_SHADE_ARGS                                                                                          \
+  GdrPtParams params, uint count, uint first, int direct, __global const uint* sorted,                         \
+      __global const GdrRayHit* rays_in, __global const uint* queue_in, __global GdrRayHit* rays_out,          \
+      __global uint* queue_out, __global GdrRay* shadow_rays, __global float4* shadow_values,                  \
+      __global GdrPathState* paths, __global float4* film, __global uint* counters, SCENE_DATA_ARGS
+
 // pt_shade_<material>: the queue entries sorted[first, first + count) of one material (or, with
 // `direct`, the queue's entries [0, count) themselves: the scene has one material type). The
 // group appends its shadow and continuing rays together (group_reserve).
 #define PT_SHADE_QUEUE(name, TYPE)                                                                            \
-  __kernel void pt_shade_##name(GdrPtParams params, uint count, uint first, int direct,                      \
-                                __global const uint* sorted, __global const GdrRayHit* rays_in,              \
-                                __global const uint* queue_in, __global GdrRayHit* rays_out,                 \
-                                __global uint* queue_out, __global GdrRay* shadow_rays,                      \
-                                __global float4* shadow_values, __global GdrPathState* paths,                \
-                                __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {           \
+  __kernel void pt_shade_##name(PT_SHADE_ARGS) {                                                             \
     __local uint scratch[GROUP_RESERVE_SCRATCH];                                                             \
     uint i = get_global_id(0);                                                                               \
     PtAppend o;                                                                                              \

@@ -6,7 +6,7 @@
 // sample, the appends) runs lane by lane through the scalar helpers (an environment map's
 // samples step by step over the lanes: light/light_lanes.h); the arithmetic between
 // (Philox, the frame, the BSDF's value, pdf and sample, MIS, Russian roulette) runs on float8
-// lanes. Included by pt.cl after pt_entry_hit.
+// lanes. Included by pt.cl after pt_entry_hit and PT_SHADE_ARGS.
 #pragma once
 #include "bsdf/bsdf_lanes.h"
 #include "core/lanes.h"
@@ -178,12 +178,7 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
 
 // One kernel per material type with a lane form, compiled where the scene has it.
 #define PT_SHADE_LANES_KERNEL(name, TYPE)                                                                    \
-  __kernel void pt_shade_lanes_##name(GdrPtParams params, uint count, uint first, int direct,              \
-                                      __global const uint* sorted, __global const GdrRayHit* rays_in,      \
-                                      __global const uint* queue_in, __global GdrRayHit* rays_out,         \
-                                      __global uint* queue_out, __global GdrRay* shadow_rays,              \
-                                      __global float4* shadow_values, __global GdrPathState* paths,        \
-                                      __global float4* film, __global uint* counters, SCENE_DATA_ARGS) {   \
+  __kernel void pt_shade_lanes_##name(PT_SHADE_ARGS) {                                                     \
     __local uint scratch[GROUP_RESERVE_SCRATCH];                                                           \
     SceneData s = path_scene(&params, SCENE_DATA_NAMES);                                                   \
     pt_shade_lanes(TYPE, params, count, first, direct, sorted, rays_in, queue_in, rays_out, queue_out,     \
