@@ -1,7 +1,7 @@
 // Sampling tables for environment maps: the weights of the map's sample grid (luminance times
-// the mean sine of each row's band of latitudes) and their alias tables, so that next-event estimation
-// draws directions from the bilinear interpolation of those weights (about in proportion to the
-// map's radiance). The kernels read them (kernels/light/envmap.h).
+// the mean sine of each row's band of latitudes) and their alias tables, so that next-event
+// estimation draws directions from the bilinear interpolation of those weights (about in
+// proportion to the map's radiance). The kernels read them (kernels/light/envmap.h).
 #pragma once
 #include <vector>
 

@@ -62,7 +62,8 @@ void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   if (types > 1) {
     EXPECT_LE(shaded, routed) << file;
   } else {
-    EXPECT_EQ(routed + stats.count("kernel_items/keys_flags"), 0u) << file << ": routing where there is nothing to route";
+    EXPECT_EQ(routed + stats.count("kernel_items/keys_flags"), 0u)
+        << file << ": routing where there is nothing to route";
   }
 }
 

@@ -40,7 +40,7 @@ namespace {
 
 struct LanesRender {
   Image image;
-  uint64_t bounce_rays, shadow_rays, lane_items, scalar_items;
+  uint64_t bounce_rays = 0, shadow_rays = 0, lane_items = 0, scalar_items = 0;
 };
 
 LanesRender render_with(const Scene& scene, int lanes) {
@@ -56,8 +56,10 @@ LanesRender render_with(const Scene& scene, int lanes) {
   r.image = PathTracer(on_device.inputs(), pt).render(s).image;
   r.bounce_rays = stats.count("rays/bounce");
   r.shadow_rays = stats.count("rays/shadow");
-  r.lane_items = stats.count("kernel_items/pt_shade_lanes_diffuse") + stats.count("kernel_items/pt_shade_lanes_plastic");
-  r.scalar_items = stats.count("kernel_items/pt_shade_diffuse") + stats.count("kernel_items/pt_shade_plastic");
+  for (const char* type : {"diffuse", "plastic"}) {
+    r.lane_items += stats.count(std::string("kernel_items/pt_shade_lanes_") + type);
+    r.scalar_items += stats.count(std::string("kernel_items/pt_shade_") + type);
+  }
   return r;
 }
 
@@ -133,11 +135,15 @@ TEST(ShadingLanes, PlasticShadesAsOnePathAWorkItem) {
     <emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>
     <emitter type="point"><point name="position" x="1" y="3" z="2"/><rgb name="intensity" value="6"/></emitter>
     <shape type="sphere"><point name="center" x="-1.1" y="1" z="0"/><float name="radius" value="1"/>
-      <bsdf type="plastic"><rgb name="diffuse_reflectance" value="0.9, 0.3, 0.3"/><float name="int_ior" value="1.9"/></bsdf>
+      <bsdf type="plastic">
+        <rgb name="diffuse_reflectance" value="0.9, 0.3, 0.3"/><float name="int_ior" value="1.9"/>
+      </bsdf>
     </shape>
     <shape type="sphere"><point name="center" x="1.1" y="1" z="0"/><float name="radius" value="1"/>
       <bsdf type="plastic"><boolean name="nonlinear" value="true"/>
-        <texture type="checkerboard" name="diffuse_reflectance"><rgb name="color0" value="0.8"/><rgb name="color1" value="0.1, 0.4, 0.7"/></texture>
+        <texture type="checkerboard" name="diffuse_reflectance">
+          <rgb name="color0" value="0.8"/><rgb name="color1" value="0.1, 0.4, 0.7"/>
+        </texture>
       </bsdf>
     </shape>
     <shape type="rectangle">
