@@ -5,6 +5,7 @@
 // already on the upper side (bsdf_flip_side applied).
 #pragma once
 #include "bsdf/bsdf_types.h"
+#include "bsdf/fresnel.h"
 #include "bsdf/plastic.h"
 #include "core/lanes.h"
 #include "shared/scene_types.h"
@@ -14,11 +15,13 @@
 typedef struct {
   LaneArray3 diffuse, specular;
   float eta[LANES], specular_weight[LANES];
+  int twosided[LANES];
 } BsdfLaneArrays;
 
 typedef struct {
   Lanes3 diffuse, specular;
   float8 eta, specular_weight;
+  int8 twosided;  // a mask: both types are opaque, so bsdf_flip_side is twosided && wo.z < 0
 } BsdfLanes;
 
 // Harmless values for a lane without a hit.
@@ -27,6 +30,7 @@ inline void bsdf_lanes_clear(BsdfLaneArrays* a, int k) {
   lane_array3_set(&a->specular, k, (float3)(0.0f));
   a->eta[k] = 1.5f;
   a->specular_weight[k] = 0.5f;
+  a->twosided[k] = 0;
 }
 
 inline void bsdf_lanes_set(BsdfLaneArrays* a, int k, const Bsdf* b) {
@@ -34,34 +38,17 @@ inline void bsdf_lanes_set(BsdfLaneArrays* a, int k, const Bsdf* b) {
   lane_array3_set(&a->specular, k, b->specular_r);
   a->eta[k] = b->eta.x;
   a->specular_weight[k] = b->specular_weight;
+  a->twosided[k] = b->twosided ? -1 : 0;
 }
 
 inline BsdfLanes bsdf_lanes_load(const BsdfLaneArrays* a) {
   BsdfLanes b = {lanes3_load(&a->diffuse), lanes3_load(&a->specular), vload8(0, a->eta),
-                 vload8(0, a->specular_weight)};
+                 vload8(0, a->specular_weight), vload8(0, a->twosided)};
   return b;
 }
 
-// fresnel_dielectric's reflectance.
-inline float8 fresnel_dielectric_r_lanes(float8 cos_theta_i, float8 eta) {
-  int8 outside = cos_theta_i >= 0.0f;
-  float8 rcp_eta = 1.0f / eta;
-  float8 eta_it = select(rcp_eta, eta, outside), eta_ti = select(eta, rcp_eta, outside);
-  float8 ci = fmin(fabs(cos_theta_i), 1.0f);
-  float8 cos_t2 = 1.0f - eta_ti * eta_ti * (1.0f - ci * ci);
-  float8 ct = sqrt(fmax(cos_t2, 0.0f));
-  float8 a_s = (ci - eta_it * ct) / (ci + eta_it * ct);
-  float8 a_p = (ct - eta_it * ci) / (ct + eta_it * ci);
-  float8 r = clamp(0.5f * (a_s * a_s + a_p * a_p), 0.0f, 1.0f);
-  r = select(r, (float8)(1.0f), (ci == 0.0f) | (cos_t2 <= 0.0f));
-  return select(r, (float8)(0.0f), eta == 1.0f);
-}
-
-inline float8 plastic_specular_probability_lanes(const BsdfLanes* b, float8 reflect) {
-  float8 ps = reflect * b->specular_weight;
-  float8 pd = (1.0f - reflect) * (1.0f - b->specular_weight);
-  return select((float8)(0.0f), ps / (ps + pd), ps + pd > 0.0f);
-}
+FRESNEL_DIELECTRIC(fresnel_dielectric_lanes, fresnel_dielectric_r_lanes, float8, int8)
+PLASTIC_SPECULAR_PROBABILITY(plastic_lobe_probability_lanes, float8)
 
 // bsdf_eval (f |cos wi|) and, in *pdf, bsdf_pdf of wo and wi.
 inline Lanes3 bsdf_lanes_eval(int type, const BsdfLanes* b, Lanes3 wo, Lanes3 wi, float8* pdf) {
@@ -73,7 +60,7 @@ inline Lanes3 bsdf_lanes_eval(int type, const BsdfLanes* b, Lanes3 wo, Lanes3 wi
     float8 r_o = fresnel_dielectric_r_lanes(wo.z, b->eta);
     float8 t_i = 1.0f - fresnel_dielectric_r_lanes(wi.z, b->eta);
     f = lanes3_finite_or_zero(lanes3_scale(b->diffuse, cos_pdf * (1.0f - r_o) * t_i / (b->eta * b->eta)));
-    p = (1.0f - plastic_specular_probability_lanes(b, r_o)) * cos_pdf;
+    p = (1.0f - plastic_lobe_probability_lanes(r_o, b->specular_weight)) * cos_pdf;
   }
   *pdf = fmax(select((float8)(0.0f), p, upper & isfinite(p)), 0.0f);
   Lanes3 zero = {(float8)(0.0f), (float8)(0.0f), (float8)(0.0f)};
@@ -93,7 +80,7 @@ inline int8 bsdf_lanes_sample(int type, const BsdfLanes* b, Lanes3 wo, float8 u0
   *delta = (int8)(0);
   if (type == BSDF_PLASTIC) {
     float8 r_o = fresnel_dielectric_r_lanes(wo.z, b->eta);
-    float8 ps = plastic_specular_probability_lanes(b, r_o);
+    float8 ps = plastic_lobe_probability_lanes(r_o, b->specular_weight);
     int8 specular = u0 < ps;
     float8 t_i = 1.0f - fresnel_dielectric_r_lanes(c.z, b->eta);
     Lanes3 diffuse = lanes3_finite_or_zero(

@@ -7,32 +7,31 @@
 // cos_theta_i > 0: arriving from outside; < 0: from inside (eta inverted). Outputs the signed
 // cosine of the refracted direction (opposite sign to cos_theta_i; 0 under total internal
 // reflection), eta_it (IOR of the transmitted side / incident side) and eta_ti = 1 / eta_it.
-// Index-matched (eta == 1) gives 0; grazing incidence (cos == 0) gives 1.
-inline float fresnel_dielectric(float cos_theta_i, float eta, float* cos_theta_t, float* eta_it,
-                                float* eta_ti) {
-  int outside = cos_theta_i >= 0.0f;
-  float rcp_eta = 1.0f / eta;
-  *eta_it = outside ? eta : rcp_eta;
-  *eta_ti = outside ? rcp_eta : eta;
-  float ci = fmin(fabs(cos_theta_i), 1.0f);
-  float cos_t2 = 1.0f - sqr(*eta_ti) * (1.0f - ci * ci);
-  float ct = safe_sqrt(cos_t2);
-  *cos_theta_t = outside ? -ct : ct;
-  if (eta == 1.0f) return 0.0f;
-  if (ci == 0.0f || cos_t2 <= 0.0f) {
-    *cos_theta_t = 0.0f;
-    return 1.0f;
+// Index-matched (eta == 1) gives 0; grazing incidence (cos == 0) gives 1. name_r: the reflectance
+// alone. Written once for values of type F with masks of type I (float and int; float8 and int8
+// for lane kernels, bsdf/bsdf_lanes.h): its cases are selects.
+#define FRESNEL_DIELECTRIC(name, name_r, F, I)                                                          \
+  inline F name(F cos_theta_i, F eta, F* cos_theta_t, F* eta_it, F* eta_ti) {                           \
+    I outside = cos_theta_i >= 0.0f;                                                                    \
+    F rcp_eta = 1.0f / eta;                                                                             \
+    *eta_it = select(rcp_eta, eta, outside);                                                            \
+    *eta_ti = select(eta, rcp_eta, outside);                                                            \
+    F ci = fmin(fabs(cos_theta_i), 1.0f);                                                               \
+    F cos_t2 = 1.0f - *eta_ti * *eta_ti * (1.0f - ci * ci);                                             \
+    F ct = sqrt(fmax(cos_t2, 0.0f));                                                                    \
+    I total = ((ci == 0.0f) | (cos_t2 <= 0.0f)) & (eta != 1.0f); /* grazing or total reflection */      \
+    *cos_theta_t = select(select(ct, -ct, outside), (F)(0.0f), total);                                  \
+    F e = *eta_it;                                                                                      \
+    F a_s = (ci - e * ct) / (ci + e * ct);                                                              \
+    F a_p = (ct - e * ci) / (ct + e * ci);                                                              \
+    F r = select(clamp(0.5f * (a_s * a_s + a_p * a_p), 0.0f, 1.0f), (F)(1.0f), total);                  \
+    return select(r, (F)(0.0f), eta == 1.0f);                                                           \
+  }                                                                                                     \
+  inline F name_r(F cos_theta_i, F eta) {                                                               \
+    F ct, eit, eti;                                                                                     \
+    return name(cos_theta_i, eta, &ct, &eit, &eti);                                                     \
   }
-  float e = *eta_it;
-  float a_s = (ci - e * ct) / (ci + e * ct);
-  float a_p = (ct - e * ci) / (ct + e * ci);
-  return clamp(0.5f * (a_s * a_s + a_p * a_p), 0.0f, 1.0f);
-}
-
-inline float fresnel_dielectric_r(float cos_theta_i, float eta) {
-  float ct, eit, eti;
-  return fresnel_dielectric(cos_theta_i, eta, &ct, &eit, &eti);
-}
+FRESNEL_DIELECTRIC(fresnel_dielectric, fresnel_dielectric_r, float, int)
 
 // Refraction of w (pointing away from the surface) through the interface with unit normal m;
 // cos_theta_t and eta_ti come from fresnel_dielectric(dot(w, m), ...).

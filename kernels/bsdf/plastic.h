@@ -19,11 +19,18 @@ inline float3 plastic_base(const Bsdf* b) {
   return d / fmax(denom, (float3)(1e-4f));
 }
 
-// Probability of choosing the specular lobe given the coating's reflectance toward wo.
+// Probability of choosing the specular lobe given the coating's reflectance toward wo and the
+// material's specular weight; for values of type F (float; float8 in bsdf/bsdf_lanes.h).
+#define PLASTIC_SPECULAR_PROBABILITY(name, F)                  \
+  inline F name(F reflect, F specular_weight) {                \
+    F ps = reflect * specular_weight;                          \
+    F pd = (1.0f - reflect) * (1.0f - specular_weight);        \
+    return select((F)(0.0f), ps / (ps + pd), ps + pd > 0.0f);  \
+  }
+PLASTIC_SPECULAR_PROBABILITY(plastic_lobe_probability, float)
+
 inline float plastic_specular_probability(const Bsdf* b, float reflect) {
-  float ps = reflect * b->specular_weight;
-  float pd = (1.0f - reflect) * (1.0f - b->specular_weight);
-  return ps + pd > 0.0f ? ps / (ps + pd) : 0.0f;
+  return plastic_lobe_probability(reflect, b->specular_weight);
 }
 
 // ---- Smooth coating: delta reflection + diffuse refracted through a smooth interface.

@@ -52,9 +52,7 @@ inline void light_sample_lanes(const SceneData* s, const int* want, const float*
   for (int k = 0; k < LANES; ++k) {
     if (!env[k]) continue;
     ls[k].wi = envmap_sample_at(l, pmf, uv[k], p_uv[k], lane_array3_get(&texel, k), &ls[k].radiance, &ls[k].pdf);
-    ls[k].dist = INFINITY;
-    ls[k].delta = 0;
-    ok[k] = ls[k].pdf > 0.0f;
+    ok[k] = environment_sample_done(&ls[k]);
   }
 #endif
 }

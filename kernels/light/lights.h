@@ -232,6 +232,14 @@ __attribute__((always_inline)) inline int light_connect(const SceneData* s, int 
   }
 }
 
+// An environment light sample whose direction, radiance and pdf are set: the rest of it, and
+// whether it is one.
+inline int environment_sample_done(LightSample* ls) {
+  ls->dist = INFINITY;
+  ls->delta = 0;
+  return ls->pdf > 0.0f;
+}
+
 // Samples a point on light `index` and evaluates it as seen from p.
 __attribute__((always_inline)) inline int light_sample(const SceneData* s, int index, float3 p, float2 u,
                                                        LightSample* ls) {
@@ -239,9 +247,7 @@ __attribute__((always_inline)) inline int light_sample(const SceneData* s, int i
   if (type == LIGHT_AREA) ls->bary = sample_triangle_barycentrics(u);
   if (type == LIGHT_CONSTANT || type == LIGHT_ENVMAP) {
     ls->wi = environment_sample(s, index, u, &ls->radiance, &ls->pdf);
-    ls->dist = INFINITY;
-    ls->delta = 0;
-    return ls->pdf > 0.0f;
+    return environment_sample_done(ls);
   }
   return light_connect(s, index, p, ls);
 }

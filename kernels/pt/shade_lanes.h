@@ -25,13 +25,11 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   // Per lane: the hit and the path at it (inactive lanes hold harmless values for the lane steps).
   uint slot[LANES], pixel[LANES], sample[LANES], depth[LANES];
   int active[LANES];
-  float twosided[LANES];
   LaneArray3 p, ng, ns, wo, beta;
   BsdfLaneArrays bsdf;
   for (int k = 0; k < LANES; ++k) {
     active[k] = 0;
     slot[k] = pixel[k] = sample[k] = depth[k] = 0u;
-    twosided[k] = 0.0f;
     lane_array3_set(&p, k, (float3)(0.0f));
     lane_array3_set(&ng, k, (float3)(0.0f, 0.0f, 1.0f));
     lane_array3_set(&ns, k, (float3)(0.0f, 0.0f, 1.0f));
@@ -53,7 +51,6 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
     pixel[k] = st.pixel;
     sample[k] = st.sample;
     depth[k] = (uint)st.depth;
-    twosided[k] = b.twosided ? 1.0f : 0.0f;  // opaque types: bsdf_flip_side is this test
     bsdf_lanes_set(&bsdf, k, &b);
     lane_array3_set(&p, k, su.p);
     lane_array3_set(&ng, k, su.ng);
@@ -69,7 +66,7 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
 
   // The light samples (nee_sample without its side test, which the lane step makes).
   int sampled[LANES], light_delta[LANES], nee_lane[LANES];
-  float light_dist[LANES], light_pdf[LANES];
+  float light_pdf[LANES];
   LaneArray3 light_wi, light_radiance;
   float ul_x[LANES], ul_y[LANES], ul_z[LANES];
   vstore8(ul.x, 0, ul_x);
@@ -80,7 +77,6 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   LightSample ls[LANES];
   light_sample_lanes(&s, nee_lane, ul_x, ul_y, ul_z, &p, sampled, ls);
   for (int k = 0; k < LANES; ++k) {
-    light_dist[k] = sampled[k] ? ls[k].dist : 0.0f;
     light_pdf[k] = sampled[k] ? ls[k].pdf : 1.0f;
     light_delta[k] = sampled[k] ? ls[k].delta : 0;
     lane_array3_set(&light_wi, k, sampled[k] ? ls[k].wi : (float3)(0.0f, 0.0f, 1.0f));
@@ -93,7 +89,7 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   FrameLanes frame = frame_lanes_from_normal(lanes3_load(&ns));
   Lanes3 wo_local = frame_lanes_to_local(&frame, lanes3_load(&wo));
   // bsdf_flip_side: a two-sided surface seen from below shades as from above.
-  int8 flip = (vload8(0, twosided) > 0.0f) & (wo_local.z < 0.0f);
+  int8 flip = B.twosided & (wo_local.z < 0.0f);
   float8 flip_sign = select((float8)(1.0f), (float8)(-1.0f), flip);
   Lanes3 wo_n = lanes3_normalize_or_zero(wo_local);
   wo_n.z *= flip_sign;
@@ -156,18 +152,19 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   for (int k = 0; k < LANES; ++k) {
     float3 pk = lane_array3_get(&p, k), ngk = lane_array3_get(&ng, k);
     if (shadow[k]) {
-      write_light_ray(&shadow_rays[want[0]], pk, ngk, lane_array3_get(&light_wi, k), light_dist[k], pixel[k]);
+      write_light_ray(&shadow_rays[want[0]], pk, ngk, lane_array3_get(&light_wi, k), ls[k].dist, pixel[k]);
       shadow_values[want[0]] = (float4)(lane_array3_get(&shadow_value, k), 0.0f);
       want[0] += 1u;
     }
     if (next[k]) {
       GdrPathState st;
-      vstore3(lane_array3_get(&next_beta, k), 0, st.throughput);
-      st.bsdf_pdf = next_pdf[k];
       st.pixel = pixel[k];
       st.sample = sample[k];
-      st.depth = (int)depth[k] + 1;
-      st.flags = next_delta[k] ? PATH_FLAG_SPECULAR : 0;  // path_advance
+      st.depth = (int)depth[k];
+      BsdfSample bs;
+      bs.pdf = next_pdf[k];
+      bs.delta = next_delta[k];
+      path_advance(&st, lane_array3_get(&next_beta, k), &bs);
       paths[slot[k]] = st;
       queue_out[want[1]] = slot[k];
       spawn_ray(&rays_out[want[1]], pk, ngk, lane_array3_get(&next_wi, k), slot[k]);

@@ -3,9 +3,8 @@
 // SCAN_BLOCK items (each block scanned in local memory, the block sums scanned the same way and
 // added back), the compaction it enables, and a counting sort by key whose buckets are then put
 // in index order, so that the result does not depend on the order atomics ran in.
-#define SCAN_GROUP 256                     // work items a block
-#define SCAN_RUN 16                        // consecutive items each one sums serially
-#define SCAN_BLOCK (SCAN_GROUP * SCAN_RUN)  // items a block
+#include "shared/scan_block.h"
+
 // Position of block item i in local memory: one word of padding every 32, so that neither the
 // coalesced copies (consecutive items) nor the runs (a stride of SCAN_RUN) meet in a GPU's banks.
 #define SCAN_AT(i) ((i) + ((i) >> 5))

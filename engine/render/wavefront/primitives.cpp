@@ -1,13 +1,13 @@
 #include "render/wavefront/primitives.h"
 
+#include "shared/scan_block.h"
+
 namespace gdr {
 namespace {
 
 constexpr const char* kProgram = "wavefront/scan.cl";
-constexpr size_t kGroup = 256;          // SCAN_GROUP
-constexpr size_t kBlock = kGroup * 16;  // SCAN_BLOCK: SCAN_GROUP work items of SCAN_RUN items
 
-size_t blocks_of(size_t n) { return (n + kBlock - 1) / kBlock; }
+size_t blocks_of(size_t n) { return (n + SCAN_BLOCK - 1) / SCAN_BLOCK; }
 
 }  // namespace
 
@@ -28,7 +28,7 @@ cl_uint DevicePrimitives::scan_level(Buffer<cl_uint>& data, size_t n, size_t lev
   if (sums_.size() <= level) sums_.resize(level + 1);
   if (sums_[level].size() < blocks) sums_[level] = Buffer<cl_uint>(ctx_, blocks);
   Buffer<cl_uint>& sums = sums_[level];
-  scan_blocks_.args(data, cl_uint(n), sums).run(blocks * kGroup, kGroup);
+  scan_blocks_.args(data, cl_uint(n), sums).run(blocks * SCAN_GROUP, SCAN_GROUP);
   cl_uint total = 0;
   if (blocks == 1) {
     if (read_total) sums.read(&total, 1);
