@@ -58,12 +58,14 @@ inline float3 envmap_lookup(const SceneData* s, __global const GdrTexture* t, fl
 
 // A sample of the density proportional to (1 - t) a + t b on [0, 1) (a, b >= 0), by its
 // inverse cdf in a form without cancellation (pbrt-v4's SampleLinear).
-inline float sample_linear(float u, float a, float b) {
-  if (!(a + b > 0.0f)) return u;
-  if (u == 0.0f && a == 0.0f) return 0.0f;
-  float x = u * (a + b) / (a + sqrt(mix(a * a, b * b, u)));
-  return fmin(x, 0x1.fffffep-1f);
-}
+// Written once for values of type F (float, and float8 for light/envmap_lanes.h): where a + b is
+// not positive, u itself; where u and a are zero, 0.
+#define SAMPLE_LINEAR(name, F)                                                                   \
+  inline F name(F u, F a, F b) {                                                                 \
+    F x = fmin(u * (a + b) / (a + sqrt(mix(a * a, b * b, u))), 0x1.fffffep-1f);                  \
+    return select(u, select(x, (F)(0.0f), (u == 0.0f) & (a == 0.0f)), a + b > 0.0f);             \
+  }
+SAMPLE_LINEAR(sample_linear, float)
 
 // An interval of n drawn with the alias table `table` (entry j: the probability of keeping j, then
 // the interval taken otherwise), and u rescaled to [0, 1) inside the drawn interval: it is

@@ -1,9 +1,9 @@
 // Light samples for kernels that shade several lanes (pt/shade_lanes.h): light_sample lane by
-// lane, except that an environment map's steps go over all the lanes that chose it before the next
-// step (its draw: EnvDraw, light/envmap.h; then its pdf, its texels), so that the lanes' table
-// reads overlap where one lane's reads would wait one after another.
+// lane, except that an environment map samples all the lanes that chose it together
+// (light/envmap_lanes.h).
 #pragma once
 #include "core/lanes.h"
+#include "light/envmap_lanes.h"
 #include "light/lights.h"
 
 // light_sample for each lane k with want[k]: the light chosen by u0[k], a point on it by
@@ -30,28 +30,23 @@ inline void light_sample_lanes(const SceneData* s, const int* want, const float*
   __global const float* table = s->env_tables + l->distribution_offset;
   int w = t->width, h = t->height;
   float pmf = light_pmf(s, s->env_light);
-  EnvDraw d[LANES];
-  for (int k = 0; k < LANES; ++k) {
-    if (env[k]) d[k] = envmap_draw_row(table, h, (float2)(u1[k], u2[k]));
-  }
-  for (int k = 0; k < LANES; ++k) {
-    if (env[k]) envmap_draw_column(table, w, h, &d[k]);
-  }
-  float2 uv[LANES];
-  for (int k = 0; k < LANES; ++k) {
-    if (env[k]) uv[k] = envmap_draw_uv(table, w, h, &d[k]);
-  }
-  float p_uv[LANES];
-  LaneArray3 texel;
-  for (int k = 0; k < LANES; ++k) {
-    if (env[k]) p_uv[k] = envmap_uv_pdf(table, w, h, uv[k]);
-  }
-  for (int k = 0; k < LANES; ++k) {
-    if (env[k]) lane_array3_set(&texel, k, envmap_lookup(s, t, uv[k]));
-  }
+  int8 on = vload8(0, env) != 0;
+  float8 u, v, p_uv;
+  Lanes3 texel, radiance, wi;
+  envmap_sample_uv_lanes(table, w, h, on, vload8(0, u1), vload8(0, u2), &u, &v);
+  envmap_uv_pdf_lookup_lanes(s, t, table, on, u, v, &p_uv, &texel);
+  float8 pdf;
+  wi = envmap_sample_at_lanes(l, pmf, u, v, p_uv, texel, &radiance, &pdf);
+  LaneArray3 wi_k, radiance_k;
+  lanes3_store(wi, &wi_k);
+  lanes3_store(radiance, &radiance_k);
+  float pdf_k[LANES];
+  vstore8(pdf, 0, pdf_k);
   for (int k = 0; k < LANES; ++k) {
     if (!env[k]) continue;
-    ls[k].wi = envmap_sample_at(l, pmf, uv[k], p_uv[k], lane_array3_get(&texel, k), &ls[k].radiance, &ls[k].pdf);
+    ls[k].wi = lane_array3_get(&wi_k, k);
+    ls[k].radiance = lane_array3_get(&radiance_k, k);
+    ls[k].pdf = pdf_k[k];
     ok[k] = environment_sample_done(&ls[k]);
   }
 #endif

@@ -1,0 +1,176 @@
+// envmap_sample_uv, envmap_uv_pdf, envmap_lookup and envmap_sample_at (light/envmap.h,
+// light/lights.h) for eight lanes at once: each table and texel read lane by lane, the arithmetic
+// between them (the alias tables' rescaling, sample_linear's roots and divisions, the grid cell,
+// the direction's sines and cosines) on float8 lanes, where lane by lane it was a chain of
+// divisions waiting one after another. Lanes outside `on` read nothing; their values are unused.
+#pragma once
+#include "core/lanes.h"
+#include "light/lights.h"
+
+#if defined(GDR_LIGHT_ENVMAP)
+SAMPLE_LINEAR(sample_linear_lanes, float8)
+
+// sample_alias for each lane: the interval of n drawn by u from the alias table at offset[k] of
+// `table`, and u rescaled inside it.
+inline int8 sample_alias_lanes(__global const float* table, const int* offset, int8 on, int n, float8 u,
+                               float8* rescaled) {
+  float8 x = u * (float)n;
+  int8 j = min(convert_int8(x), n - 1);
+  float8 f = fmin(x - convert_float8(j), 0x1.fffffep-1f);
+  int jk[LANES], onk[LANES];
+  float keep[LANES], alias[LANES];
+  vstore8(j, 0, jk);
+  vstore8(on, 0, onk);
+  for (int k = 0; k < LANES; ++k) {
+    keep[k] = 1.0f;
+    alias[k] = 0.0f;
+    if (!onk[k]) continue;
+    keep[k] = table[offset[k] + 2 * jk[k]];
+    alias[k] = table[offset[k] + 2 * jk[k] + 1];
+  }
+  float8 kp = vload8(0, keep);
+  int8 kept = f < kp;
+  *rescaled = select(clamp((f - kp) / (1.0f - kp), 0.0f, 0x1.fffffep-1f), f / kp, kept);
+  return select(convert_int8(vload8(0, alias)), j, kept);
+}
+
+// Two table values a lane: table[offset[k] + i0[k]] and table[offset[k] + i1[k]].
+inline void envmap_read_pair_lanes(__global const float* table, const int* offset, int8 on, int8 i0, int8 i1,
+                                   float8* a, float8* b) {
+  int ok[LANES], j0[LANES], j1[LANES];
+  float va[LANES], vb[LANES];
+  vstore8(on, 0, ok);
+  vstore8(i0, 0, j0);
+  vstore8(i1, 0, j1);
+  for (int k = 0; k < LANES; ++k) {
+    va[k] = vb[k] = 0.0f;
+    if (!ok[k]) continue;
+    va[k] = table[offset[k] + j0[k]];
+    vb[k] = table[offset[k] + j1[k]];
+  }
+  *a = vload8(0, va);
+  *b = vload8(0, vb);
+}
+
+// envmap_sample_uv for each lane in `on`: the lat-long position (*u, *v) drawn by (u1, u2).
+inline void envmap_sample_uv_lanes(__global const float* table, int w, int h, int8 on, float8 u1, float8 u2,
+                                   float8* u, float8* v) {
+  int offset[LANES];
+  // The band, by the bands' alias table, and v inside it from the linear marginal.
+  for (int k = 0; k < LANES; ++k) offset[k] = 0;
+  float8 ub;
+  int8 band = sample_alias_lanes(table, offset, on, h - 1, u2, &ub);
+  for (int k = 0; k < LANES; ++k) offset[k] = env_table_row_sums_offset(h);
+  float8 a, b;
+  envmap_read_pair_lanes(table, offset, on, band, band + 1, &a, &b);
+  float8 fr = sample_linear_lanes(ub, a, b);
+  // One of the band's two rows by its share at v (envmap_draw_row).
+  float8 share = (1.0f - fr) * a, total = share + fr * b;
+  float8 p0 = select(select((float8)(0.0f), (float8)(1.0f), a > 0.0f), share / total, total > 0.0f);
+  int8 first = u1 < p0;
+  int8 row = select(band + 1, band, first);
+  float8 du = clamp(select((u1 - p0) / (1.0f - p0), u1 / p0, first), 0.0f, 0x1.fffffep-1f);
+  // The row's column interval, and u inside it from the weights at its ends.
+  int rows[LANES];
+  vstore8(row, 0, rows);
+  for (int k = 0; k < LANES; ++k) offset[k] = env_table_aliases_offset(w, h, rows[k]);
+  float8 dc;
+  int8 c = sample_alias_lanes(table, offset, on, w, du, &dc);
+  for (int k = 0; k < LANES; ++k) offset[k] = env_table_weights_offset(w, h, rows[k]);
+  float8 fa, fb;
+  envmap_read_pair_lanes(table, offset, on, c, select(c + 1, (int8)(0), c + 1 == w), &fa, &fb);
+  float8 x = (convert_float8(c) + sample_linear_lanes(dc, fa, fb) + 0.5f) / (float)w;
+  *u = select(x, x - 1.0f, x >= 1.0f);
+  *v = (convert_float8(band) + fr) / (float)(h - 1);
+}
+
+// envmap_cell for each lane: columns c0, c1 (weight fc on c1), rows r0, r0 + 1 (weight fr).
+inline void envmap_cell_lanes(float8 u, float8 v, int w, int h, int8* c0, int8* c1, int8* r0, float8* fc,
+                              float8* fr) {
+  float8 x = u * (float)w - 0.5f;
+  x -= floor(x / (float)w) * (float)w;
+  *c0 = min(convert_int8(x), w - 1);
+  *fc = clamp(x - convert_float8(*c0), 0.0f, 1.0f);
+  *c1 = select(*c0 + 1, (int8)(0), *c0 + 1 == w);
+  float8 y = clamp(v, 0.0f, 1.0f) * (float)(h - 1);
+  *r0 = min(convert_int8(y), h - 2);
+  *fr = clamp(y - convert_float8(*r0), 0.0f, 1.0f);
+}
+
+// envmap_uv_pdf and envmap_lookup at each lane's (u, v) in `on`: *p_uv and the texel *texel.
+inline void envmap_uv_pdf_lookup_lanes(const SceneData* s, __global const GdrTexture* t,
+                                       __global const float* table, int8 on, float8 u, float8 v, float8* p_uv,
+                                       Lanes3* texel) {
+  int w = t->width, h = t->height;
+  on &= isfinite(u) & isfinite(v);
+  int8 c0, c1, r0;
+  float8 fc, fr;
+  envmap_cell_lanes(u, v, w, h, &c0, &c1, &r0, &fc, &fr);
+  int ok[LANES], k0[LANES], k1[LANES], rk[LANES];
+  vstore8(on, 0, ok);
+  vstore8(c0, 0, k0);
+  vstore8(c1, 0, k1);
+  vstore8(r0, 0, rk);
+  float f00[LANES], f01[LANES], f10[LANES], f11[LANES];
+  LaneArray3 t00, t01, t10, t11;
+  for (int k = 0; k < LANES; ++k) {
+    f00[k] = f01[k] = f10[k] = f11[k] = 0.0f;
+    float3 zero = (float3)(0.0f);
+    lane_array3_set(&t00, k, zero);
+    lane_array3_set(&t01, k, zero);
+    lane_array3_set(&t10, k, zero);
+    lane_array3_set(&t11, k, zero);
+    if (!ok[k]) continue;
+    __global const float* w0 = table + env_table_weights_offset(w, h, rk[k]);
+    __global const float* w1 = w0 + w;
+    f00[k] = w0[k0[k]];
+    f01[k] = w0[k1[k]];
+    f10[k] = w1[k0[k]];
+    f11[k] = w1[k1[k]];
+    lane_array3_set(&t00, k, envmap_texel(s, t, k0[k], rk[k]));
+    lane_array3_set(&t01, k, envmap_texel(s, t, k1[k], rk[k]));
+    lane_array3_set(&t10, k, envmap_texel(s, t, k0[k], rk[k] + 1));
+    lane_array3_set(&t11, k, envmap_texel(s, t, k1[k], rk[k] + 1));
+  }
+  float8 top = mix(vload8(0, f00), vload8(0, f01), fc), bottom = mix(vload8(0, f10), vload8(0, f11), fc);
+  *p_uv = select((float8)(0.0f), mix(top, bottom, fr) * (float)w * (float)(h - 1), on);
+  Lanes3 a = lanes3_load(&t00), b = lanes3_load(&t01), c = lanes3_load(&t10), d = lanes3_load(&t11);
+  Lanes3 r = {mix(mix(a.x, b.x, fc), mix(c.x, d.x, fc), fr), mix(mix(a.y, b.y, fc), mix(c.y, d.y, fc), fr),
+              mix(mix(a.z, b.z, fc), mix(c.z, d.z, fc), fr)};
+  *texel = r;
+}
+
+// sin(pi y) and cos(pi y) for any y: the quarter-period polynomial after taking out the nearest
+// multiple n of 1/2, then the rotation by n quarter turns.
+inline void sincospi_lanes(float8 y, float8* s, float8* c) {
+  float8 n = rint(2.0f * y);
+  float8 sr, cr;
+  sincospi_quarter_lanes(y - 0.5f * n, &sr, &cr);
+  int8 q = convert_int8(n) & 3;
+  int8 swap = (q & 1) != 0;
+  float8 s1 = select(sr, cr, swap), c1 = select(cr, -sr, swap);
+  int8 flip = q >= 2;
+  *s = select(s1, -s1, flip);
+  *c = select(c1, -c1, flip);
+}
+
+// envmap_sample_at for each lane: the world direction toward map l at (u, v), with *pdf from p_uv
+// and *radiance from the texel.
+inline Lanes3 envmap_sample_at_lanes(__global const GdrLight* l, float pmf, float8 u, float8 v, float8 p_uv,
+                                     Lanes3 texel, Lanes3* radiance, float8* pdf) {
+  float8 sin_theta, cos_theta, sin_phi, cos_phi;
+  sincospi_lanes(v, &sin_theta, &cos_theta);
+  sincospi_lanes(2.0f * u, &sin_phi, &cos_phi);
+  Lanes3 d = {sin_theta * sin_phi, cos_theta, -sin_theta * cos_phi};
+  // envmap_solid_angle
+  float8 st = sqrt(d.x * d.x + d.z * d.z);
+  *pdf = select((float8)(0.0f), pmf * p_uv / (2.0f * M_PI_F * M_PI_F * st), st > 0.0f);
+  float3 scale = vload3(0, l->radiance);
+  Lanes3 rad = {texel.x * scale.x, texel.y * scale.y, texel.z * scale.z};
+  *radiance = rad;
+  __global const float* m = l->to_world;  // xform_vector's rows
+  Lanes3 wi = {m[0] * d.x + m[1] * d.y + m[2] * d.z, m[4] * d.x + m[5] * d.y + m[6] * d.z,
+               m[8] * d.x + m[9] * d.y + m[10] * d.z};
+  return lanes3_normalize_or_zero(wi);
+}
+#endif
