@@ -40,7 +40,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, BuildQuality quality, Stats* stats)
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw Error("Embree: cannot create a device");
   scene_ = rtcNewScene(device_);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  if (scene.robust_intersections) rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, to_rtc(quality));
   if (!scene.triangles.empty()) {
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -72,6 +72,10 @@ void compute_bounds(Scene& s) {
 
 // Top-level definitions that only matter when something refers to them.
 bool is_definition(const std::string& tag) { return tag == "bsdf" || tag == "texture"; }
+bool is_value(const std::string& tag) {
+  return tag == "boolean" || tag == "integer" || tag == "float" || tag == "string" || tag == "rgb" ||
+         tag == "spectrum" || tag == "point" || tag == "vector" || tag == "transform";
+}
 
 }  // namespace
 
@@ -91,6 +95,7 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
     ctx.warn(path + ": " + problem + "; ignored");
   }
 
+  scene.robust_intersections = ctx.props(*doc.root).get_bool("embree_use_robust_intersections", false);
   std::vector<const XmlNode*> emitters;
   for (const auto& child : doc.root->children) {
     const XmlNode& node = *child;
@@ -103,8 +108,8 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
       load_shape(ctx, node);
     } else if (tag == "emitter") {
       emitters.push_back(&node);
-    } else if (is_definition(tag)) {
-      continue;
+    } else if (is_definition(tag) || is_value(tag)) {
+      continue;  // values: the scene's properties, read above or reported as unknown below
     } else if (tag == "medium" || tag == "phase" || tag == "volume") {
       ctx.unsupported(node, "participating media not supported: ignored");
     } else {

@@ -38,6 +38,9 @@ struct Scene {
   std::string integrator_file;  // where the <integrator> element is, for messages
   int integrator_line = 0;
   int max_depth = -1;       // the integrator's max_depth (-1: unbounded in Mitsuba)
+  // Mitsuba 3's scene property embree_use_robust_intersections: Embree's robust mode, watertight
+  // at edges and vertices at some cost in traversal speed (off, as in Mitsuba 3).
+  bool robust_intersections = false;
 
   SceneFeatures features;
   std::vector<std::string> warnings;  // unsupported features, each naming element, file and line

@@ -2,7 +2,8 @@
 // file and line; reflectances above 1 are clamped with a warning; a negative envmap scale is an
 // error; unknown parameters and versions, a scene without emitters, an empty mesh and a replaced
 // up vector are warnings naming file and line (unknown parameters are errors with --strict);
-// Mitsuba's direct integrator is path tracing of two segments.
+// Mitsuba's direct integrator is path tracing of two segments; Embree's robust mode is a scene
+// property.
 #include <gtest/gtest.h>
 
 #include "scene/load_scene.h"
@@ -100,6 +101,20 @@ TEST(SceneValues, KnownParametersDoNotWarn) {
 <shape type="sphere"><float name="radius" value="2"/><bsdf type="roughplastic"><float name="alpha" value="0.2"/>
 <rgb name="diffuse_reflectance" value="0.4"/><string name="distribution" value="ggx"/></bsdf></shape>)");
   EXPECT_TRUE(s.warnings.empty()) << all_warnings(s);
+}
+
+// Mitsuba 3's scene-level embree_use_robust_intersections (off unless given); another value at
+// the scene's top level is an unknown parameter.
+TEST(SceneValues, RobustIntersectionsAreASceneProperty) {
+  test::TempFolder folder;
+  std::string shape = std::string(kLight) + "<shape type=\"sphere\"/>";
+  EXPECT_FALSE(load(folder, shape).robust_intersections);
+  Scene s = load(folder, shape + "\n<boolean name=\"embree_use_robust_intersections\" value=\"true\"/>");
+  EXPECT_TRUE(s.robust_intersections);
+  EXPECT_TRUE(s.warnings.empty()) << all_warnings(s);
+  Scene typo = load(folder, shape + "\n<boolean name=\"embree_use_robust\" value=\"true\"/>");
+  EXPECT_FALSE(typo.robust_intersections);
+  EXPECT_TRUE(has_warning(typo, {"s.xml:4", "embree_use_robust"})) << all_warnings(typo);
 }
 
 TEST(SceneValues, DirectIntegratorIsTwoSegmentPathTracing) {
