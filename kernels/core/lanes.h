@@ -108,6 +108,7 @@ inline Lanes3 lanes3_normalize_or_zero(Lanes3 v) {
   }
 SINCOSPI_QUARTER(sincospi_quarter, float)
 SINCOSPI_QUARTER(sincospi_quarter_lanes, float8)
+ATAN2_APPROX(atan2_approx_lanes, float8)
 
 // square_to_cosine_hemisphere (core/warp.h) of (u0, u1): the concentric disk's branches as selects,
 // its angle phi in units of pi within [-1/4, 3/4], folded to |phi| <= 1/4 for the polynomial.

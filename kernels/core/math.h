@@ -73,14 +73,16 @@ inline float erfinv_approx(float x) {
 // PoCL's atan2 is an out-of-line call that took 3% of a render of Mitsuba's material-preview
 // scene. The angle of the smaller over the larger magnitude, reduced past tan(pi/8) by
 // atan(a) = pi/4 + atan((a - 1) / (a + 1)), from Cephes' atanf polynomial.
-inline float atan2_approx(float y, float x) {
-  float ax = fabs(x), ay = fabs(y), hi = fmax(ax, ay), lo = fmin(ax, ay);
-  float a = hi > 0.0f ? lo / hi : 0.0f;
-  int reduce = a > 0.41421356f;
-  float t = reduce ? (a - 1.0f) / (a + 1.0f) : a, z = t * t;
-  float r = (reduce ? M_PI_4_F : 0.0f) +
-            ((((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * t + t);
-  r = ay > ax ? M_PI_2_F - r : r;
-  r = x < 0.0f ? M_PI_F - r : r;
-  return y < 0.0f ? -r : r;
-}
+// Written once for values of type F (float here, float8 in core/lanes.h).
+#define ATAN2_APPROX(name, F)                                                                          \
+  inline F name(F y, F x) {                                                                            \
+    F ax = fabs(x), ay = fabs(y), hi = fmax(ax, ay), lo = fmin(ax, ay);                                \
+    F a = select((F)(0.0f), lo / hi, hi > 0.0f);                                                       \
+    F t = select(a, (a - 1.0f) / (a + 1.0f), a > 0.41421356f), z = t * t;                              \
+    F r = select((F)(0.0f), (F)(M_PI_4_F), a > 0.41421356f) +                                          \
+          ((((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * t + t); \
+    r = select(r, M_PI_2_F - r, ay > ax);                                                              \
+    r = select(r, M_PI_F - r, x < 0.0f);                                                               \
+    return select(r, -r, y < 0.0f);                                                                    \
+  }
+ATAN2_APPROX(atan2_approx, float)

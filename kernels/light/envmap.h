@@ -93,56 +93,31 @@ inline float envmap_uv_pdf(__global const float* table, int w, int h, float2 uv)
   return mix(top, bottom, g.fr) * (float)w * (float)(h - 1);
 }
 
-// envmap_sample_uv in three steps, each ending at the table read the next one needs (the band's
-// row sums, the row's alias entry, the column's weights): a kernel that draws for several lanes
-// runs each step over all its lanes before the next (light/light_lanes.h), so that their reads
-// overlap where one draw's would wait one after another.
-typedef struct EnvDraw {
-  int band, row, column;
-  float fr;  // v inside the band
-  float u;   // the number left for the next step: the row's column, then u inside the column
-} EnvDraw;
-
-// The band, v inside it, and which of its two rows gives u.
-inline EnvDraw envmap_draw_row(__global const float* table, int h, float2 u) {
-  __global const float* sums = table + env_table_row_sums_offset(h);
-  EnvDraw d;
-  float ub;
-  d.band = sample_alias(table, h - 1, u.y, &ub);
-  float a = sums[d.band], b = sums[d.band + 1];
-  d.fr = sample_linear(ub, a, b);
-  // At v the band's density is (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised
-  // densities: pick row band + i in proportion to its term, then u from that row.
-  float share = (1.0f - d.fr) * a, total = share + d.fr * b;
-  float p0 = total > 0.0f ? share / total : (a > 0.0f ? 1.0f : 0.0f);
-  d.row = d.band;
-  if (u.x < p0) {
-    d.u = u.x / p0;
-  } else {
-    d.row = d.band + 1;
-    d.u = (u.x - p0) / (1.0f - p0);
+// At v = fr inside a band whose rows' sums are a and b, the band's density is
+// (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised densities: the first row's share,
+// in which it gives u. Written once for values of type F (float, float8 in light/envmap_lanes.h).
+#define ENVMAP_FIRST_ROW_SHARE(name, F)                                                \
+  inline F name(F fr, F a, F b) {                                                      \
+    F share = (1.0f - fr) * a, total = share + fr * b;                                 \
+    return select(select((F)(0.0f), (F)(1.0f), a > 0.0f), share / total, total > 0.0f); \
   }
-  d.u = clamp(d.u, 0.0f, 0x1.fffffep-1f);
-  return d;
-}
+ENVMAP_FIRST_ROW_SHARE(envmap_first_row_share, float)
 
-// The row's column interval, from its alias table.
-inline void envmap_draw_column(__global const float* table, int w, int h, EnvDraw* d) {
-  d->column = sample_alias(table + env_table_aliases_offset(w, h, d->row), w, d->u, &d->u);
-}
-
-// u inside the column, from the weights at its ends: the drawn lat-long position.
-inline float2 envmap_draw_uv(__global const float* table, int w, int h, const EnvDraw* d) {
-  __global const float* f = table + env_table_weights_offset(w, h, d->row);
-  int c = d->column;
-  float fc = sample_linear(d->u, f[c], f[c + 1 == w ? 0 : c + 1]);
-  float x = ((float)c + fc + 0.5f) / (float)w;
-  return (float2)(x >= 1.0f ? x - 1.0f : x, ((float)d->band + d->fr) / (float)(h - 1));
-}
-
-// A lat-long position drawn in proportion to the bilinear interpolation of the table's weights.
+// A lat-long position drawn in proportion to the bilinear interpolation of the table's weights:
+// a band by its mass and v inside it, one of its rows by its share there, a column interval from
+// that row's alias table, and u inside it from the weights at its ends.
 inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
-  EnvDraw d = envmap_draw_row(table, h, u);
-  envmap_draw_column(table, w, h, &d);
-  return envmap_draw_uv(table, w, h, &d);
+  __global const float* sums = table + env_table_row_sums_offset(h);
+  float ub;
+  int band = sample_alias(table, h - 1, u.y, &ub);
+  float a = sums[band], b = sums[band + 1];
+  float fr = sample_linear(ub, a, b);
+  float p0 = envmap_first_row_share(fr, a, b);
+  int first = u.x < p0, row = first ? band : band + 1;
+  float du = clamp(first ? u.x / p0 : (u.x - p0) / (1.0f - p0), 0.0f, 0x1.fffffep-1f);
+  float dc;
+  int c = sample_alias(table + env_table_aliases_offset(w, h, row), w, du, &dc);
+  __global const float* f = table + env_table_weights_offset(w, h, row);
+  float x = ((float)c + sample_linear(dc, f[c], f[c + 1 == w ? 0 : c + 1]) + 0.5f) / (float)w;
+  return (float2)(x >= 1.0f ? x - 1.0f : x, ((float)band + fr) / (float)(h - 1));
 }

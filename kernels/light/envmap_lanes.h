@@ -1,5 +1,5 @@
-// envmap_sample_uv, envmap_uv_pdf, envmap_lookup and envmap_sample_at (light/envmap.h,
-// light/lights.h) for eight lanes at once: each table and texel read lane by lane, the arithmetic
+// envmap_sample_uv, envmap_uv_pdf, envmap_lookup, envmap_sample_at and environment_eval
+// (light/envmap.h, light/lights.h) for eight lanes at once: each table and texel read lane by lane, the arithmetic
 // between them (the alias tables' rescaling, sample_linear's roots and divisions, the grid cell,
 // the direction's sines and cosines) on float8 lanes, where lane by lane it was a chain of
 // divisions waiting one after another. Lanes outside `on` read nothing; their values are unused.
@@ -9,6 +9,7 @@
 
 #if defined(GDR_LIGHT_ENVMAP)
 SAMPLE_LINEAR(sample_linear_lanes, float8)
+ENVMAP_FIRST_ROW_SHARE(envmap_first_row_share_lanes, float8)
 
 // sample_alias for each lane: the interval of n drawn by u from the alias table at offset[k] of
 // `table`, and u rescaled inside it.
@@ -64,9 +65,8 @@ inline void envmap_sample_uv_lanes(__global const float* table, int w, int h, in
   float8 a, b;
   envmap_read_pair_lanes(table, offset, on, band, band + 1, &a, &b);
   float8 fr = sample_linear_lanes(ub, a, b);
-  // One of the band's two rows by its share at v (envmap_draw_row).
-  float8 share = (1.0f - fr) * a, total = share + fr * b;
-  float8 p0 = select(select((float8)(0.0f), (float8)(1.0f), a > 0.0f), share / total, total > 0.0f);
+  // One of the band's two rows by its share at v.
+  float8 p0 = envmap_first_row_share_lanes(fr, a, b);
   int8 first = u1 < p0;
   int8 row = select(band + 1, band, first);
   float8 du = clamp(select((u1 - p0) / (1.0f - p0), u1 / p0, first), 0.0f, 0x1.fffffep-1f);
@@ -154,6 +154,19 @@ inline void sincospi_lanes(float8 y, float8* s, float8* c) {
   *c = select(c1, -c1, flip);
 }
 
+// envmap_solid_angle for each lane: the solid-angle pdf of local direction d from p_uv.
+inline float8 envmap_solid_angle_lanes(float pmf, Lanes3 d, float8 p_uv) {
+  float8 sin_theta = sqrt(d.x * d.x + d.z * d.z);
+  return select((float8)(0.0f), pmf * p_uv / (2.0f * M_PI_F * M_PI_F * sin_theta), sin_theta > 0.0f);
+}
+
+// A texel of map l times its radiance scale.
+inline Lanes3 envmap_scaled_lanes(__global const GdrLight* l, Lanes3 texel) {
+  float3 scale = vload3(0, l->radiance);
+  Lanes3 r = {texel.x * scale.x, texel.y * scale.y, texel.z * scale.z};
+  return r;
+}
+
 // envmap_sample_at for each lane: the world direction toward map l at (u, v), with *pdf from p_uv
 // and *radiance from the texel.
 inline Lanes3 envmap_sample_at_lanes(__global const GdrLight* l, float pmf, float8 u, float8 v, float8 p_uv,
@@ -162,15 +175,30 @@ inline Lanes3 envmap_sample_at_lanes(__global const GdrLight* l, float pmf, floa
   sincospi_lanes(v, &sin_theta, &cos_theta);
   sincospi_lanes(2.0f * u, &sin_phi, &cos_phi);
   Lanes3 d = {sin_theta * sin_phi, cos_theta, -sin_theta * cos_phi};
-  // envmap_solid_angle
-  float8 st = sqrt(d.x * d.x + d.z * d.z);
-  *pdf = select((float8)(0.0f), pmf * p_uv / (2.0f * M_PI_F * M_PI_F * st), st > 0.0f);
-  float3 scale = vload3(0, l->radiance);
-  Lanes3 rad = {texel.x * scale.x, texel.y * scale.y, texel.z * scale.z};
-  *radiance = rad;
+  *pdf = envmap_solid_angle_lanes(pmf, d, p_uv);
+  *radiance = envmap_scaled_lanes(l, texel);
   __global const float* m = l->to_world;  // xform_vector's rows
   Lanes3 wi = {m[0] * d.x + m[1] * d.y + m[2] * d.z, m[4] * d.x + m[5] * d.y + m[6] * d.z,
                m[8] * d.x + m[9] * d.y + m[10] * d.z};
   return lanes3_normalize_or_zero(wi);
+}
+
+// environment_eval of map l (chosen with probability pmf) for each lane in `on`: the radiance
+// arriving along -dir (world, unit) and *pdf, from its position (envmap_uv) in the map.
+inline Lanes3 envmap_eval_lanes(const SceneData* s, __global const GdrLight* l, float pmf, int8 on, Lanes3 dir,
+                                float8* pdf) {
+  __global const float* m = l->to_local;  // envmap_local_direction
+  Lanes3 d = lanes3_normalize_or_zero((Lanes3){m[0] * dir.x + m[1] * dir.y + m[2] * dir.z,
+                                               m[4] * dir.x + m[5] * dir.y + m[6] * dir.z,
+                                               m[8] * dir.x + m[9] * dir.y + m[10] * dir.z});
+  float8 u = atan2_approx_lanes(d.x, -d.z) * (0.5f * M_1_PI_F);
+  u -= floor(u);
+  float8 v = acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F;
+  __global const GdrTexture* t = &s->textures[l->texture];
+  float8 p_uv;
+  Lanes3 texel;
+  envmap_uv_pdf_lookup_lanes(s, t, s->env_tables + l->distribution_offset, on, u, v, &p_uv, &texel);
+  *pdf = envmap_solid_angle_lanes(pmf, d, p_uv);
+  return envmap_scaled_lanes(l, texel);
 }
 #endif

@@ -1,6 +1,6 @@
-// Light samples for kernels that shade several lanes (pt/shade_lanes.h): light_sample lane by
-// lane, except that an environment map samples all the lanes that chose it together
-// (light/envmap_lanes.h).
+// Light samples and environment lookups for kernels that shade several lanes (pt/shade_lanes.h,
+// pt/route_lanes.h): light_sample lane by lane, except that an environment map samples all the
+// lanes that chose it together (light/envmap_lanes.h), as it looks up the lanes' escaped rays.
 #pragma once
 #include "core/lanes.h"
 #include "light/envmap_lanes.h"
@@ -51,3 +51,19 @@ inline void light_sample_lanes(const SceneData* s, const int* want, const float*
   }
 #endif
 }
+
+#if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
+// environment_eval for each lane in `on` (the scene has an environment): the radiance arriving
+// along -dir and *pdf.
+inline Lanes3 environment_eval_lanes(const SceneData* s, int8 on, Lanes3 dir, float8* pdf) {
+  __global const GdrLight* l = &s->lights[s->env_light];
+  float pmf = light_pmf(s, s->env_light);
+#if defined(GDR_LIGHT_ENVMAP)
+  if (l->type == LIGHT_ENVMAP) return envmap_eval_lanes(s, l, pmf, on, dir, pdf);
+#endif
+  *pdf = (float8)(pmf * GDR_INV_4PI);
+  float3 r = vload3(0, l->radiance);
+  Lanes3 le = {(float8)(r.x), (float8)(r.y), (float8)(r.z)};
+  return le;
+}
+#endif

@@ -187,4 +187,5 @@ __attribute__((always_inline)) inline void pt_shade_hit(GdrPtParams params, uint
 GDR_MATERIAL_QUEUES(PT_SHADE_QUEUE)
 
 #include "pt/generate_lanes.h"
+#include "pt/route_lanes.h"
 #include "pt/shade_lanes.h"

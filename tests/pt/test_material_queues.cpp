@@ -4,7 +4,8 @@
 // one of them. On the project's diffuse Cornell box (one type: no routing), the glass box
 // (diffuse and dielectric) and the environment scene (diffuse, rough conductor, rough plastic),
 // with the diffuse queue shaded one path and eight paths a work item (pt_shade_lanes_diffuse; the
-// smooth plastic queue too, pt_shade_lanes_plastic, where a scene has one).
+// smooth plastic queue too, pt_shade_lanes_plastic, where a scene has one; routed by pt_route or
+// pt_route_lanes).
 // The images do not depend on the routing: scripts/render-hashes renders them bit for bit as one
 // shading kernel did.
 #include <gtest/gtest.h>
@@ -58,7 +59,8 @@ void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   EXPECT_EQ(types, expected_types) << file;
   // Every queue entry was routed; the hits among them were shaded once each (misses are not).
   EXPECT_GT(shaded, 0u);
-  const uint64_t routed = stats.count("kernel_items/pt_route");
+  const uint64_t routed = stats.count(lanes == 8 ? "kernel_items/pt_route_lanes" : "kernel_items/pt_route");
+  EXPECT_EQ(stats.count(lanes == 8 ? "kernel_items/pt_route" : "kernel_items/pt_route_lanes"), 0u) << file;
   if (types > 1) {
     EXPECT_LE(shaded, routed) << file;
   } else {

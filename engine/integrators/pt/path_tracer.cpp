@@ -47,7 +47,7 @@ PathTracer::PathTracer(const RenderInputs& in, const PtSettings& pt)
       kernels_(in.context, in.scene),
       lanes_(pt.lanes.value_or(in.context.is_cpu() ? 8 : 1)),
       generate_(kernels_.make(kProgram, lanes_ == 8 ? "pt_generate_lanes" : "pt_generate")),
-      route_(kernels_.make(kProgram, "pt_route")),
+      route_(kernels_.make(kProgram, lanes_ == 8 ? "pt_route_lanes" : "pt_route")),
       shadow_(kernels_.make(kProgram, "path_shadow_add")),
       capacity_(chunk_capacity(kMaxPathsInFlight, in.scene.camera.width, in.scene.camera.height)),
       film_(in.context, in.scene.camera.width, in.scene.camera.height, {"radiance"}) {
@@ -85,7 +85,7 @@ void PathTracer::enqueue_shade(Batch& b, const GdrPtParams& params, int cur, cl_
     route_
         .args(params, active, b.queues.rays[cur], b.queues.slots[cur], b.materials.keys(), b.paths,
               film_["radiance"], b.counters.buffer(), in_.device_scene)
-        .run(active);
+        .run_lanes(active, size_t(lanes_));
   }
   for (const MaterialQueues::Queue& q : b.materials.route(active)) {
     q.kernel
