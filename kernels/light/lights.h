@@ -168,8 +168,9 @@ inline float spot_falloff(__global const GdrLight* l, float3 dir) {
   return cutoff > beam ? (cutoff - angle) / (cutoff - beam) : 0.0f;
 }
 
-// Evaluates the light point already chosen in ls (ls->bary for area lights, ls->wi for lights
-// at infinity) as seen from p: direction, distance, arriving radiance and pdf. Next-event
+// Evaluates the light point already chosen in ls (ls->bary for area lights; for lights at
+// infinity ls->wi, and for an environment the radiance and pdf sampled with it) as seen from p:
+// direction, distance, arriving radiance and pdf. Next-event
 // estimation samples the point first; a gradient-domain offset path reconnects to the same point
 // from its own vertex. Returns 0 when the light cannot contribute.
 __attribute__((always_inline)) inline int light_connect(const SceneData* s, int index, float3 p, LightSample* ls) {
@@ -223,8 +224,8 @@ __attribute__((always_inline)) inline int light_connect(const SceneData* s, int 
 #if defined(GDR_LIGHT_CONSTANT) || defined(GDR_LIGHT_ENVMAP)
     case LIGHT_CONSTANT:
     case LIGHT_ENVMAP:
+      // The same direction from any point: the sample's radiance and pdf hold as they are.
       ls->dist = INFINITY;
-      ls->radiance = environment_eval(s, ls->wi, &ls->pdf);
       return ls->pdf > 0.0f;
 #endif
     default:
