@@ -22,7 +22,7 @@ SceneArrays scene_arrays(Context& ctx, const Scene& s) {
   a.textures = s.textures;
   a.texels = s.texels;
   a.lights = s.lights;
-  build_environment_tables(s, a.lights, a.env_tables);
+  build_environment_tables(s, a.lights, a.env_tables, a.texels);
   a.light_cdf = light_selection_cdf(s);
   return a;
 }

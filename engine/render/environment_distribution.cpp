@@ -51,7 +51,8 @@ double band_sine(int r, int h) {
 
 }  // namespace
 
-void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights, std::vector<float>& tables) {
+void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights, std::vector<float>& tables,
+                              std::vector<Vec4>& texels) {
   for (GdrLight& l : lights) {
     if (l.type != LIGHT_ENVMAP || l.texture < 0) continue;
     const GdrTexture& t = scene.textures[l.texture];
@@ -94,10 +95,9 @@ void build_environment_tables(const Scene& scene, std::vector<GdrLight>& lights,
     for (int r = 0; r < h; ++r) {
       sums[r] = static_cast<float>(row_sum[r] / z);
       std::vector<double> interval(w);
-      float* f = table + env_table_weights_offset(w, h, r);
       for (int c = 0; c < w; ++c) {
         interval[c] = 0.5 * (weight[size_t(r) * w + c] + weight[size_t(r) * w + (c + 1) % w]);
-        f[c] = static_cast<float>(weight[size_t(r) * w + c] / z);
+        texels[size_t(t.offset) + size_t(r) * w + c].w = static_cast<float>(weight[size_t(r) * w + c] / z);
       }
       write_alias(interval, table + env_table_aliases_offset(w, h, r));
     }

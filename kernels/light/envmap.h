@@ -4,7 +4,7 @@
 // The map's texels are samples on a grid: column c at u = (c + 1/2) / W, wrapping around in phi;
 // row r at v = r / (H - 1), so the first and last rows lie on the poles. Radiance is the bilinear
 // interpolation of the four samples around (u, v). The sampler draws from the same bilinear
-// interpolation of the table's weights (shared/environment_table.h): a band between two rows by
+// interpolation of the sampling weights (shared/environment_table.h: the texels' fourth channel): a band between two rows by
 // its mass, v inside it from the linear marginal, one of the band's two rows by its share at that
 // v, a column interval from that row's alias table and u inside it from the linear density there.
 #pragma once
@@ -43,17 +43,33 @@ inline EnvGridCell envmap_cell(float2 uv, int w, int h) {
   return g;
 }
 
-inline float3 envmap_texel(const SceneData* s, __global const GdrTexture* t, int c, int r) {
-  return s->texels[t->offset + r * t->width + c].xyz;
+// Grid sample (c, r): its radiance in xyz, its sampling weight in w.
+inline float4 envmap_texel(const SceneData* s, __global const GdrTexture* t, int c, int r) {
+  return s->texels[t->offset + r * t->width + c];
 }
 
-// Radiance of the map (before its scale) at lat-long position uv.
-inline float3 envmap_lookup(const SceneData* s, __global const GdrTexture* t, float2 uv) {
+// Radiance of the map (before its scale) at lat-long position uv, and in *p_uv the sampler's
+// density there per unit u and v: both the bilinear interpolation of the same four texels.
+inline float3 envmap_lookup_pdf(const SceneData* s, __global const GdrTexture* t, float2 uv, float* p_uv) {
+  *p_uv = 0.0f;
   if (!isfinite(uv.x) || !isfinite(uv.y)) return (float3)(0.0f);
   EnvGridCell g = envmap_cell(uv, t->width, t->height);
-  float3 top = mix(envmap_texel(s, t, g.c0, g.r0), envmap_texel(s, t, g.c1, g.r0), g.fc);
-  float3 bottom = mix(envmap_texel(s, t, g.c0, g.r0 + 1), envmap_texel(s, t, g.c1, g.r0 + 1), g.fc);
-  return mix(top, bottom, g.fr);
+  float4 top = mix(envmap_texel(s, t, g.c0, g.r0), envmap_texel(s, t, g.c1, g.r0), g.fc);
+  float4 bottom = mix(envmap_texel(s, t, g.c0, g.r0 + 1), envmap_texel(s, t, g.c1, g.r0 + 1), g.fc);
+  float4 v = mix(top, bottom, g.fr);
+  *p_uv = v.w * (float)t->width * (float)(t->height - 1);
+  return v.xyz;
+}
+
+inline float3 envmap_lookup(const SceneData* s, __global const GdrTexture* t, float2 uv) {
+  float p_uv;
+  return envmap_lookup_pdf(s, t, uv, &p_uv);
+}
+
+inline float envmap_uv_pdf(const SceneData* s, __global const GdrTexture* t, float2 uv) {
+  float p_uv;
+  envmap_lookup_pdf(s, t, uv, &p_uv);
+  return p_uv;
 }
 
 // A sample of the density proportional to (1 - t) a + t b on [0, 1) (a, b >= 0), by its
@@ -83,16 +99,6 @@ inline int sample_alias(__global const float* table, int n, float u, float* resc
   return (int)table[2 * j + 1];
 }
 
-// Density, per unit u and v, with which envmap_sample_uv draws uv.
-inline float envmap_uv_pdf(__global const float* table, int w, int h, float2 uv) {
-  if (!isfinite(uv.x) || !isfinite(uv.y)) return 0.0f;
-  EnvGridCell g = envmap_cell(uv, w, h);
-  __global const float* f0 = table + env_table_weights_offset(w, h, g.r0);
-  __global const float* f1 = table + env_table_weights_offset(w, h, g.r0 + 1);
-  float top = mix(f0[g.c0], f0[g.c1], g.fc), bottom = mix(f1[g.c0], f1[g.c1], g.fc);
-  return mix(top, bottom, g.fr) * (float)w * (float)(h - 1);
-}
-
 // At v = fr inside a band whose rows' sums are a and b, the band's density is
 // (1 - fr) a g_0(u) + fr b g_1(u), g_i the rows' own normalised densities: the first row's share,
 // in which it gives u. Written once for values of type F (float, float8 in light/envmap_lanes.h).
@@ -106,7 +112,9 @@ ENVMAP_FIRST_ROW_SHARE(envmap_first_row_share, float)
 // A lat-long position drawn in proportion to the bilinear interpolation of the table's weights:
 // a band by its mass and v inside it, one of its rows by its share there, a column interval from
 // that row's alias table, and u inside it from the weights at its ends.
-inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2 u) {
+inline float2 envmap_sample_uv(const SceneData* s, __global const GdrTexture* t, __global const float* table,
+                               float2 u) {
+  int w = t->width, h = t->height;
   __global const float* sums = table + env_table_row_sums_offset(h);
   float ub;
   int band = sample_alias(table, h - 1, u.y, &ub);
@@ -117,7 +125,7 @@ inline float2 envmap_sample_uv(__global const float* table, int w, int h, float2
   float du = clamp(first ? u.x / p0 : (u.x - p0) / (1.0f - p0), 0.0f, 0x1.fffffep-1f);
   float dc;
   int c = sample_alias(table + env_table_aliases_offset(w, h, row), w, du, &dc);
-  __global const float* f = table + env_table_weights_offset(w, h, row);
-  float x = ((float)c + sample_linear(dc, f[c], f[c + 1 == w ? 0 : c + 1]) + 0.5f) / (float)w;
+  float fa = envmap_texel(s, t, c, row).w, fb = envmap_texel(s, t, c + 1 == w ? 0 : c + 1, row).w;
+  float x = ((float)c + sample_linear(dc, fa, fb) + 0.5f) / (float)w;
   return (float2)(x >= 1.0f ? x - 1.0f : x, ((float)band + fr) / (float)(h - 1));
 }

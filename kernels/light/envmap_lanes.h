@@ -1,4 +1,4 @@
-// envmap_sample_uv, envmap_uv_pdf, envmap_lookup, envmap_sample_at and environment_eval
+// envmap_sample_uv, envmap_lookup_pdf, envmap_sample_at and environment_eval
 // (light/envmap.h, light/lights.h) for eight lanes at once: each table and texel read lane by lane, the arithmetic
 // between them (the alias tables' rescaling, sample_linear's roots and divisions, the grid cell,
 // the direction's sines and cosines) on float8 lanes, where lane by lane it was a chain of
@@ -54,8 +54,9 @@ inline void envmap_read_pair_lanes(__global const float* table, const int* offse
 }
 
 // envmap_sample_uv for each lane in `on`: the lat-long position (*u, *v) drawn by (u1, u2).
-inline void envmap_sample_uv_lanes(__global const float* table, int w, int h, int8 on, float8 u1, float8 u2,
-                                   float8* u, float8* v) {
+inline void envmap_sample_uv_lanes(const SceneData* s, __global const GdrTexture* t, __global const float* table,
+                                   int8 on, float8 u1, float8 u2, float8* u, float8* v) {
+  int w = t->width, h = t->height;
   int offset[LANES];
   // The band, by the bands' alias table, and v inside it from the linear marginal.
   for (int k = 0; k < LANES; ++k) offset[k] = 0;
@@ -76,9 +77,18 @@ inline void envmap_sample_uv_lanes(__global const float* table, int w, int h, in
   for (int k = 0; k < LANES; ++k) offset[k] = env_table_aliases_offset(w, h, rows[k]);
   float8 dc;
   int8 c = sample_alias_lanes(table, offset, on, w, du, &dc);
-  for (int k = 0; k < LANES; ++k) offset[k] = env_table_weights_offset(w, h, rows[k]);
-  float8 fa, fb;
-  envmap_read_pair_lanes(table, offset, on, c, select(c + 1, (int8)(0), c + 1 == w), &fa, &fb);
+  int ok[LANES], c0[LANES], c1[LANES];
+  vstore8(on, 0, ok);
+  vstore8(c, 0, c0);
+  vstore8(select(c + 1, (int8)(0), c + 1 == w), 0, c1);
+  float wa[LANES], wb[LANES];
+  for (int k = 0; k < LANES; ++k) {
+    wa[k] = wb[k] = 0.0f;
+    if (!ok[k]) continue;
+    wa[k] = envmap_texel(s, t, c0[k], rows[k]).w;
+    wb[k] = envmap_texel(s, t, c1[k], rows[k]).w;
+  }
+  float8 fa = vload8(0, wa), fb = vload8(0, wb);
   float8 x = (convert_float8(c) + sample_linear_lanes(dc, fa, fb) + 0.5f) / (float)w;
   *u = select(x, x - 1.0f, x >= 1.0f);
   *v = (convert_float8(band) + fr) / (float)(h - 1);
@@ -97,10 +107,9 @@ inline void envmap_cell_lanes(float8 u, float8 v, int w, int h, int8* c0, int8* 
   *fr = clamp(y - convert_float8(*r0), 0.0f, 1.0f);
 }
 
-// envmap_uv_pdf and envmap_lookup at each lane's (u, v) in `on`: *p_uv and the texel *texel.
-inline void envmap_uv_pdf_lookup_lanes(const SceneData* s, __global const GdrTexture* t,
-                                       __global const float* table, int8 on, float8 u, float8 v, float8* p_uv,
-                                       Lanes3* texel) {
+// envmap_lookup_pdf at each lane's (u, v) in `on`: the texel *texel and *p_uv.
+inline void envmap_lookup_pdf_lanes(const SceneData* s, __global const GdrTexture* t, int8 on, float8 u, float8 v,
+                                    Lanes3* texel, float8* p_uv) {
   int w = t->width, h = t->height;
   on &= isfinite(u) & isfinite(v);
   int8 c0, c1, r0;
@@ -111,33 +120,30 @@ inline void envmap_uv_pdf_lookup_lanes(const SceneData* s, __global const GdrTex
   vstore8(c0, 0, k0);
   vstore8(c1, 0, k1);
   vstore8(r0, 0, rk);
-  float f00[LANES], f01[LANES], f10[LANES], f11[LANES];
-  LaneArray3 t00, t01, t10, t11;
+  float4 t00[LANES], t01[LANES], t10[LANES], t11[LANES];
   for (int k = 0; k < LANES; ++k) {
-    f00[k] = f01[k] = f10[k] = f11[k] = 0.0f;
-    float3 zero = (float3)(0.0f);
-    lane_array3_set(&t00, k, zero);
-    lane_array3_set(&t01, k, zero);
-    lane_array3_set(&t10, k, zero);
-    lane_array3_set(&t11, k, zero);
+    t00[k] = t01[k] = t10[k] = t11[k] = (float4)(0.0f);
     if (!ok[k]) continue;
-    __global const float* w0 = table + env_table_weights_offset(w, h, rk[k]);
-    __global const float* w1 = w0 + w;
-    f00[k] = w0[k0[k]];
-    f01[k] = w0[k1[k]];
-    f10[k] = w1[k0[k]];
-    f11[k] = w1[k1[k]];
-    lane_array3_set(&t00, k, envmap_texel(s, t, k0[k], rk[k]));
-    lane_array3_set(&t01, k, envmap_texel(s, t, k1[k], rk[k]));
-    lane_array3_set(&t10, k, envmap_texel(s, t, k0[k], rk[k] + 1));
-    lane_array3_set(&t11, k, envmap_texel(s, t, k1[k], rk[k] + 1));
+    t00[k] = envmap_texel(s, t, k0[k], rk[k]);
+    t01[k] = envmap_texel(s, t, k1[k], rk[k]);
+    t10[k] = envmap_texel(s, t, k0[k], rk[k] + 1);
+    t11[k] = envmap_texel(s, t, k1[k], rk[k] + 1);
   }
-  float8 top = mix(vload8(0, f00), vload8(0, f01), fc), bottom = mix(vload8(0, f10), vload8(0, f11), fc);
-  *p_uv = select((float8)(0.0f), mix(top, bottom, fr) * (float)w * (float)(h - 1), on);
-  Lanes3 a = lanes3_load(&t00), b = lanes3_load(&t01), c = lanes3_load(&t10), d = lanes3_load(&t11);
-  Lanes3 r = {mix(mix(a.x, b.x, fc), mix(c.x, d.x, fc), fr), mix(mix(a.y, b.y, fc), mix(c.y, d.y, fc), fr),
-              mix(mix(a.z, b.z, fc), mix(c.z, d.z, fc), fr)};
+  // Component-major: lane k's texel component i at float index 4 k + i.
+  float8 m[4];
+  for (int i = 0; i < 4; ++i) {
+    float a[LANES], b[LANES], c[LANES], d[LANES];
+    for (int k = 0; k < LANES; ++k) {
+      a[k] = ((float*)&t00[k])[i];
+      b[k] = ((float*)&t01[k])[i];
+      c[k] = ((float*)&t10[k])[i];
+      d[k] = ((float*)&t11[k])[i];
+    }
+    m[i] = mix(mix(vload8(0, a), vload8(0, b), fc), mix(vload8(0, c), vload8(0, d), fc), fr);
+  }
+  Lanes3 r = {m[0], m[1], m[2]};
   *texel = r;
+  *p_uv = select((float8)(0.0f), m[3] * (float)w * (float)(h - 1), on);
 }
 
 // sin(pi y) and cos(pi y) for any y: the quarter-period polynomial after taking out the nearest
@@ -197,7 +203,7 @@ inline Lanes3 envmap_eval_lanes(const SceneData* s, __global const GdrLight* l, 
   __global const GdrTexture* t = &s->textures[l->texture];
   float8 p_uv;
   Lanes3 texel;
-  envmap_uv_pdf_lookup_lanes(s, t, s->env_tables + l->distribution_offset, on, u, v, &p_uv, &texel);
+  envmap_lookup_pdf_lanes(s, t, on, u, v, &texel, &p_uv);
   *pdf = envmap_solid_angle_lanes(pmf, d, p_uv);
   return envmap_scaled_lanes(l, texel);
 }

@@ -28,13 +28,12 @@ inline void light_sample_lanes(const SceneData* s, const int* want, const float*
   __global const GdrLight* l = &s->lights[s->env_light];
   __global const GdrTexture* t = &s->textures[l->texture];
   __global const float* table = s->env_tables + l->distribution_offset;
-  int w = t->width, h = t->height;
   float pmf = light_pmf(s, s->env_light);
   int8 on = vload8(0, env) != 0;
   float8 u, v, p_uv;
   Lanes3 texel, radiance, wi;
-  envmap_sample_uv_lanes(table, w, h, on, vload8(0, u1), vload8(0, u2), &u, &v);
-  envmap_uv_pdf_lookup_lanes(s, t, table, on, u, v, &p_uv, &texel);
+  envmap_sample_uv_lanes(s, t, table, on, vload8(0, u1), vload8(0, u2), &u, &v);
+  envmap_lookup_pdf_lanes(s, t, on, u, v, &texel, &p_uv);
   float8 pdf;
   wi = envmap_sample_at_lanes(l, pmf, u, v, p_uv, texel, &radiance, &pdf);
   LaneArray3 wi_k, radiance_k;

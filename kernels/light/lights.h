@@ -65,7 +65,7 @@ inline float envmap_solid_angle(float pmf, float3 d, float p_uv) {
 // l, chosen with probability pmf.
 inline float envmap_solid_angle_pdf(const SceneData* s, __global const GdrLight* l, float pmf, float3 d, float2 uv) {
   __global const GdrTexture* t = &s->textures[l->texture];
-  return envmap_solid_angle(pmf, d, envmap_uv_pdf(s->env_tables + l->distribution_offset, t->width, t->height, uv));
+  return envmap_solid_angle(pmf, d, envmap_uv_pdf(s, t, uv));
 }
 #endif
 
@@ -102,9 +102,10 @@ inline float3 environment_eval(const SceneData* s, float3 dir, float* pdf) {
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     float3 d = envmap_local_direction(l, dir);
-    float2 uv = envmap_uv(d);
-    *pdf = envmap_solid_angle_pdf(s, l, pmf, d, uv);
-    return envmap_lookup(s, &s->textures[l->texture], uv) * vload3(0, l->radiance);
+    float p_uv;
+    float3 texel = envmap_lookup_pdf(s, &s->textures[l->texture], envmap_uv(d), &p_uv);
+    *pdf = envmap_solid_angle(pmf, d, p_uv);
+    return texel * vload3(0, l->radiance);
   }
 #endif
   *pdf = pmf * GDR_INV_4PI;
@@ -113,7 +114,7 @@ inline float3 environment_eval(const SceneData* s, float3 dir, float* pdf) {
 
 #if defined(GDR_LIGHT_ENVMAP)
 // The direction toward envmap light l (chosen with probability pmf) at the lat-long position uv
-// it drew, from what its tables hold there (p_uv: envmap_uv_pdf; texel: envmap_lookup), with
+// it drew, from what its texels hold there (envmap_lookup_pdf: texel, p_uv), with
 // *radiance and *pdf as environment_eval gives them along it: read at uv rather than at the
 // direction's position (which would convert it back).
 inline float3 envmap_sample_at(__global const GdrLight* l, float pmf, float2 uv, float p_uv, float3 texel,
@@ -135,10 +136,10 @@ inline float3 environment_sample(const SceneData* s, int index, float2 u, float3
 #if defined(GDR_LIGHT_ENVMAP)
   if (l->type == LIGHT_ENVMAP) {
     __global const GdrTexture* t = &s->textures[l->texture];
-    __global const float* table = s->env_tables + l->distribution_offset;
-    float2 uv = envmap_sample_uv(table, t->width, t->height, u);
-    return envmap_sample_at(l, pmf, uv, envmap_uv_pdf(table, t->width, t->height, uv), envmap_lookup(s, t, uv),
-                            radiance, pdf);
+    float2 uv = envmap_sample_uv(s, t, s->env_tables + l->distribution_offset, u);
+    float p_uv;
+    float3 texel = envmap_lookup_pdf(s, t, uv, &p_uv);
+    return envmap_sample_at(l, pmf, uv, p_uv, texel, radiance, pdf);
   }
 #endif
   *pdf = pmf * GDR_INV_4PI;

@@ -80,7 +80,7 @@ TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
 }
 
 // The environment tables follow their shared layout: the row sums are those of the rows'
-// weights, and the bilinear interpolant of the weights integrates to 1 over the grid (each
+// weights (the fourth channel of the map's texels, whose radiance stays), and the bilinear interpolant of the weights integrates to 1 over the grid (each
 // band between rows the mean of its two rows' sums).
 TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   Scene scene = test::envmap_scene();
@@ -95,11 +95,12 @@ TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   ASSERT_LE(sums + h, table + env_table_aliases_offset(w, h, 0));
   double integral = 0;
   for (int r = 0; r < h; ++r) {
-    const float* f = table + env_table_weights_offset(w, h, r);
+    const Vec4* f = &a.texels[size_t(t.offset) + size_t(r) * w];
     double sum = 0;
     for (int c = 0; c < w; ++c) {
-      EXPECT_GE(f[c], 0.0f);
-      sum += f[c];
+      EXPECT_GE(f[c].w, 0.0f);
+      EXPECT_EQ(f[c].x, scene.texels[size_t(t.offset) + size_t(r) * w + c].x);  // the radiance kept
+      sum += f[c].w;
     }
     EXPECT_NEAR(sums[r], sum, 1e-5) << "row " << r;
     if (r + 1 < h) integral += 0.5 * sums[r];
@@ -142,9 +143,9 @@ TEST(SceneBuffers, EnvironmentAliasTablesDrawEachIntervalByItsMass) {
   for (int b = 0; b + 1 < h; ++b) bands[b] = 0.5 * (double(sums[b]) + sums[b + 1]);
   check(table, bands, "bands");
   for (int r = 0; r < h; ++r) {
-    const float* f = table + env_table_weights_offset(w, h, r);
+    const Vec4* f = &a.texels[size_t(t.offset) + size_t(r) * w];
     std::vector<double> intervals(w);
-    for (int c = 0; c < w; ++c) intervals[c] = 0.5 * (double(f[c]) + f[(c + 1) % w]);
+    for (int c = 0; c < w; ++c) intervals[c] = 0.5 * (double(f[c].w) + f[(c + 1) % w].w);
     check(table + env_table_aliases_offset(w, h, r), intervals, "row " + std::to_string(r));
   }
 }
