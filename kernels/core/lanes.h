@@ -110,6 +110,20 @@ SINCOSPI_QUARTER(sincospi_quarter, float)
 SINCOSPI_QUARTER(sincospi_quarter_lanes, float8)
 ATAN2_APPROX(atan2_approx_lanes, float8)
 
+// sin(pi y) and cos(pi y) for any y: the quarter-period polynomial after taking out the nearest
+// multiple n of 1/2, then the rotation by n quarter turns.
+inline void sincospi_lanes(float8 y, float8* s, float8* c) {
+  float8 n = rint(2.0f * y);
+  float8 sr, cr;
+  sincospi_quarter_lanes(y - 0.5f * n, &sr, &cr);
+  int8 q = convert_int8(n) & 3;
+  int8 swap = (q & 1) != 0;
+  float8 s1 = select(sr, cr, swap), c1 = select(cr, -sr, swap);
+  int8 flip = q >= 2;
+  *s = select(s1, -s1, flip);
+  *c = select(c1, -c1, flip);
+}
+
 // square_to_cosine_hemisphere (core/warp.h) of (u0, u1): the concentric disk's branches as selects,
 // its angle phi in units of pi within [-1/4, 3/4], folded to |phi| <= 1/4 for the polynomial.
 inline Lanes3 square_to_cosine_hemisphere_lanes(float8 u0, float8 u1) {

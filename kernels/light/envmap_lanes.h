@@ -1,5 +1,5 @@
-// envmap_sample_uv, envmap_lookup_pdf, envmap_sample_at and environment_eval
-// (light/envmap.h, light/lights.h) for eight lanes at once: each table and texel read lane by lane, the arithmetic
+// envmap_sample_uv, envmap_lookup_pdf, envmap_sample_at and environment_eval (light/envmap.h,
+// light/lights.h) for eight lanes at once: each table and texel read lane by lane, the arithmetic
 // between them (the alias tables' rescaling, sample_linear's roots and divisions, the grid cell,
 // the direction's sines and cosines) on float8 lanes, where lane by lane it was a chain of
 // divisions waiting one after another. Lanes outside `on` read nothing; their values are unused.
@@ -35,9 +35,8 @@ inline int8 sample_alias_lanes(__global const float* table, const int* offset, i
   return select(convert_int8(vload8(0, alias)), j, kept);
 }
 
-// Two table values a lane: table[offset[k] + i0[k]] and table[offset[k] + i1[k]].
-inline void envmap_read_pair_lanes(__global const float* table, const int* offset, int8 on, int8 i0, int8 i1,
-                                   float8* a, float8* b) {
+// Two values a lane: values[i0[k]] and values[i1[k]].
+inline void envmap_read_pair_lanes(__global const float* values, int8 on, int8 i0, int8 i1, float8* a, float8* b) {
   int ok[LANES], j0[LANES], j1[LANES];
   float va[LANES], vb[LANES];
   vstore8(on, 0, ok);
@@ -46,8 +45,8 @@ inline void envmap_read_pair_lanes(__global const float* table, const int* offse
   for (int k = 0; k < LANES; ++k) {
     va[k] = vb[k] = 0.0f;
     if (!ok[k]) continue;
-    va[k] = table[offset[k] + j0[k]];
-    vb[k] = table[offset[k] + j1[k]];
+    va[k] = values[j0[k]];
+    vb[k] = values[j1[k]];
   }
   *a = vload8(0, va);
   *b = vload8(0, vb);
@@ -62,9 +61,8 @@ inline void envmap_sample_uv_lanes(const SceneData* s, __global const GdrTexture
   for (int k = 0; k < LANES; ++k) offset[k] = 0;
   float8 ub;
   int8 band = sample_alias_lanes(table, offset, on, h - 1, u2, &ub);
-  for (int k = 0; k < LANES; ++k) offset[k] = env_table_row_sums_offset(h);
   float8 a, b;
-  envmap_read_pair_lanes(table, offset, on, band, band + 1, &a, &b);
+  envmap_read_pair_lanes(table + env_table_row_sums_offset(h), on, band, band + 1, &a, &b);
   float8 fr = sample_linear_lanes(ub, a, b);
   // One of the band's two rows by its share at v.
   float8 p0 = envmap_first_row_share_lanes(fr, a, b);
@@ -120,44 +118,29 @@ inline void envmap_lookup_pdf_lanes(const SceneData* s, __global const GdrTextur
   vstore8(c0, 0, k0);
   vstore8(c1, 0, k1);
   vstore8(r0, 0, rk);
-  float4 t00[LANES], t01[LANES], t10[LANES], t11[LANES];
+  float t00[4 * LANES], t01[4 * LANES], t10[4 * LANES], t11[4 * LANES];  // lane k's at 4 k
   for (int k = 0; k < LANES; ++k) {
-    t00[k] = t01[k] = t10[k] = t11[k] = (float4)(0.0f);
-    if (!ok[k]) continue;
-    t00[k] = envmap_texel(s, t, k0[k], rk[k]);
-    t01[k] = envmap_texel(s, t, k1[k], rk[k]);
-    t10[k] = envmap_texel(s, t, k0[k], rk[k] + 1);
-    t11[k] = envmap_texel(s, t, k1[k], rk[k] + 1);
+    float4 zero = (float4)(0.0f);
+    vstore4(ok[k] ? envmap_texel(s, t, k0[k], rk[k]) : zero, k, t00);
+    vstore4(ok[k] ? envmap_texel(s, t, k1[k], rk[k]) : zero, k, t01);
+    vstore4(ok[k] ? envmap_texel(s, t, k0[k], rk[k] + 1) : zero, k, t10);
+    vstore4(ok[k] ? envmap_texel(s, t, k1[k], rk[k] + 1) : zero, k, t11);
   }
-  // Component-major: lane k's texel component i at float index 4 k + i.
+  // Each component i (radiance, then weight) of the lanes' texels, interpolated on lanes.
   float8 m[4];
   for (int i = 0; i < 4; ++i) {
     float a[LANES], b[LANES], c[LANES], d[LANES];
     for (int k = 0; k < LANES; ++k) {
-      a[k] = ((float*)&t00[k])[i];
-      b[k] = ((float*)&t01[k])[i];
-      c[k] = ((float*)&t10[k])[i];
-      d[k] = ((float*)&t11[k])[i];
+      a[k] = t00[4 * k + i];
+      b[k] = t01[4 * k + i];
+      c[k] = t10[4 * k + i];
+      d[k] = t11[4 * k + i];
     }
     m[i] = mix(mix(vload8(0, a), vload8(0, b), fc), mix(vload8(0, c), vload8(0, d), fc), fr);
   }
   Lanes3 r = {m[0], m[1], m[2]};
   *texel = r;
   *p_uv = select((float8)(0.0f), m[3] * (float)w * (float)(h - 1), on);
-}
-
-// sin(pi y) and cos(pi y) for any y: the quarter-period polynomial after taking out the nearest
-// multiple n of 1/2, then the rotation by n quarter turns.
-inline void sincospi_lanes(float8 y, float8* s, float8* c) {
-  float8 n = rint(2.0f * y);
-  float8 sr, cr;
-  sincospi_quarter_lanes(y - 0.5f * n, &sr, &cr);
-  int8 q = convert_int8(n) & 3;
-  int8 swap = (q & 1) != 0;
-  float8 s1 = select(sr, cr, swap), c1 = select(cr, -sr, swap);
-  int8 flip = q >= 2;
-  *s = select(s1, -s1, flip);
-  *c = select(c1, -c1, flip);
 }
 
 // envmap_solid_angle for each lane: the solid-angle pdf of local direction d from p_uv.
