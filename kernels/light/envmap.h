@@ -4,9 +4,10 @@
 // The map's texels are samples on a grid: column c at u = (c + 1/2) / W, wrapping around in phi;
 // row r at v = r / (H - 1), so the first and last rows lie on the poles. Radiance is the bilinear
 // interpolation of the four samples around (u, v). The sampler draws from the same bilinear
-// interpolation of the sampling weights (shared/environment_table.h: the texels' fourth channel): a band between two rows by
-// its mass, v inside it from the linear marginal, one of the band's two rows by its share at that
-// v, a column interval from that row's alias table and u inside it from the linear density there.
+// interpolation of the sampling weights (the texels' fourth channel, shared/environment_table.h):
+// a band between two rows by its mass, v inside it from the linear marginal, one of the band's two
+// rows by its share at that v, a column interval from that row's alias table and u inside it from
+// the linear density there.
 #pragma once
 #include "core/math.h"
 #include "scene/scene_data.h"
@@ -109,7 +110,7 @@ inline int sample_alias(__global const float* table, int n, float u, float* resc
   }
 ENVMAP_FIRST_ROW_SHARE(envmap_first_row_share, float)
 
-// A lat-long position drawn in proportion to the bilinear interpolation of the table's weights:
+// A lat-long position drawn in proportion to the bilinear interpolation of the weights:
 // a band by its mass and v inside it, one of its rows by its share there, a column interval from
 // that row's alias table, and u inside it from the weights at its ends.
 inline float2 envmap_sample_uv(const SceneData* s, __global const GdrTexture* t, __global const float* table,

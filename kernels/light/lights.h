@@ -171,9 +171,9 @@ inline float spot_falloff(__global const GdrLight* l, float3 dir) {
 
 // Evaluates the light point already chosen in ls (ls->bary for area lights; for lights at
 // infinity ls->wi, and for an environment the radiance and pdf sampled with it) as seen from p:
-// direction, distance, arriving radiance and pdf. Next-event
-// estimation samples the point first; a gradient-domain offset path reconnects to the same point
-// from its own vertex. Returns 0 when the light cannot contribute.
+// direction, distance, arriving radiance and pdf. Next-event estimation samples the point first;
+// a gradient-domain offset path reconnects to the same point from its own vertex. Returns 0 when
+// the light cannot contribute.
 __attribute__((always_inline)) inline int light_connect(const SceneData* s, int index, float3 p, LightSample* ls) {
   __global const GdrLight* l = &s->lights[index];
   float pmf = light_pmf(s, index);

@@ -23,9 +23,15 @@ inline float surface_light_pdf(const SceneData* s, const Surface* su, float dist
   return area_pdf(s, su->light, su->area, dist, dot(su->ng, wo));
 }
 
+// Whether emission found by BSDF sampling takes weight 1: seen from the camera, through a delta
+// vertex, or under BSDF sampling alone.
+inline int emission_unweighted(const GdrPathState* st, int strategy) {
+  return st->depth == 0 || (st->flags & PATH_FLAG_SPECULAR) || strategy == PT_STRATEGY_BSDF;
+}
+
 // MIS weight of emission found by BSDF sampling, against light sampling with pdf `light_pdf`.
 inline float emission_weight(const GdrPathState* st, int strategy, float light_pdf) {
-  if (st->depth == 0 || (st->flags & PATH_FLAG_SPECULAR) || strategy == PT_STRATEGY_BSDF) return 1.0f;
+  if (emission_unweighted(st, strategy)) return 1.0f;
   if (strategy == PT_STRATEGY_LIGHT) return 0.0f;
   return power_heuristic(st->bsdf_pdf, light_pdf);
 }

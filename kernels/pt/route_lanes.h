@@ -34,8 +34,7 @@ __kernel void pt_route_lanes(GdrPtParams params, uint count, __global const GdrR
     miss[k] = -1;  // a mask, as the lane steps' comparisons give
     any = 1;
     pixel[k] = st.pixel;
-    // emission_weight's cases: 1, or the power heuristic (0 for light sampling alone, below).
-    unweighted[k] = st.depth == 0 || (st.flags & PATH_FLAG_SPECULAR) || params.strategy == PT_STRATEGY_BSDF ? -1 : 0;
+    unweighted[k] = emission_unweighted(&st, params.strategy) ? -1 : 0;
     bsdf_pdf[k] = st.bsdf_pdf;
     lane_array3_set(&dir, k, (float3)(rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z));
     lane_array3_set(&beta, k, vload3(0, st.throughput));
@@ -45,7 +44,9 @@ __kernel void pt_route_lanes(GdrPtParams params, uint count, __global const GdrR
   if (!any) return;
   float8 light_pdf;
   Lanes3 le = environment_eval_lanes(&s, vload8(0, miss), lanes3_load(&dir), &light_pdf);
-  float8 w = params.strategy == PT_STRATEGY_LIGHT ? (float8)(0.0f) : power_heuristic_lanes(vload8(0, bsdf_pdf), light_pdf);
+  // emission_weight: 1, else 0 under light sampling alone, else the power heuristic.
+  float8 w = power_heuristic_lanes(vload8(0, bsdf_pdf), light_pdf);
+  if (params.strategy == PT_STRATEGY_LIGHT) w = (float8)(0.0f);
   w = select(w, (float8)(1.0f), vload8(0, unweighted));
   LaneArray3 c;
   lanes3_store(lanes3_scale(lanes3_mul(lanes3_load(&beta), le), w), &c);

@@ -7,8 +7,8 @@
 // accepted, the same continuations and roulette, so Embree traces as many bounce and shadow
 // rays. The directions differ only by the cosine-weighted sample's sine and cosine, a polynomial
 // within 4e-7 of PoCL's sinpi and cospi. In the Cornell box (one material type: the queue
-// unrouted, misses shaded in the kernel) and the environment scene (routed, an environment map,
-// two-sided diffuse beside other types) the ray counts are equal and the images' relative L1
+// unrouted, misses shaded in the kernel) and the environment scene (routed by pt_route_lanes
+// against pt_route, an environment map, two-sided diffuse beside other types) the ray counts are equal and the images' relative L1
 // difference below 1e-6 (measured 2.8e-8 and 1.0e-8). Behind the glass box's dielectric a
 // refraction can turn that difference into another path: counts within 1e-3 (measured 6e-5),
 // images within 1e-4 (measured 5.5e-6). A two-sided diffuse rectangle seen from behind, lit by a
