@@ -160,7 +160,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         "traces the other: 1 | 2 (default: 2; gpt: 2 on a GPU, 1 on a CPU device)")
       ->check(CLI::IsMember({"1", "2"}));
   param("--lanes", "lanes",
-        "paths a work item of the camera-ray, diffuse and plastic shading kernels: 8 (default on CPU "
+        "paths a work item of the camera-ray, routing, diffuse and plastic shading kernels: 8 (default on CPU "
         "devices, whose OpenCL compiler widens none of them across work items) | 1 (default on GPUs)")
       ->check(CLI::IsMember({"1", "8"}));
   param("--chains", "chains", "Markov chains run side by side (default: one a pixel, at most 32768)")->check(CLI::Range(1, 1 << 30));
