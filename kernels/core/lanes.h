@@ -91,6 +91,13 @@ inline Lanes3 frame_lanes_to_world(const FrameLanes* f, Lanes3 v) {
   return w;
 }
 
+// xform_vector (core/geometry.h) by the 3x4 matrix m.
+inline Lanes3 xform_vector_lanes(__global const float* m, Lanes3 v) {
+  Lanes3 r = {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
+              m[8] * v.x + m[9] * v.y + m[10] * v.z};
+  return r;
+}
+
 // normalize_or(v, 0).
 inline Lanes3 lanes3_normalize_or_zero(Lanes3 v) {
   float8 len2 = lanes3_dot(v, v);

@@ -166,20 +166,14 @@ inline Lanes3 envmap_sample_at_lanes(__global const GdrLight* l, float pmf, floa
   Lanes3 d = {sin_theta * sin_phi, cos_theta, -sin_theta * cos_phi};
   *pdf = envmap_solid_angle_lanes(pmf, d, p_uv);
   *radiance = envmap_scaled_lanes(l, texel);
-  __global const float* m = l->to_world;  // xform_vector's rows
-  Lanes3 wi = {m[0] * d.x + m[1] * d.y + m[2] * d.z, m[4] * d.x + m[5] * d.y + m[6] * d.z,
-               m[8] * d.x + m[9] * d.y + m[10] * d.z};
-  return lanes3_normalize_or_zero(wi);
+  return lanes3_normalize_or_zero(xform_vector_lanes(l->to_world, d));
 }
 
 // environment_eval of map l (chosen with probability pmf) for each lane in `on`: the radiance
 // arriving along -dir (world, unit) and *pdf, from its position (envmap_uv) in the map.
 inline Lanes3 envmap_eval_lanes(const SceneData* s, __global const GdrLight* l, float pmf, int8 on, Lanes3 dir,
                                 float8* pdf) {
-  __global const float* m = l->to_local;  // envmap_local_direction
-  Lanes3 d = lanes3_normalize_or_zero((Lanes3){m[0] * dir.x + m[1] * dir.y + m[2] * dir.z,
-                                               m[4] * dir.x + m[5] * dir.y + m[6] * dir.z,
-                                               m[8] * dir.x + m[9] * dir.y + m[10] * dir.z});
+  Lanes3 d = lanes3_normalize_or_zero(xform_vector_lanes(l->to_local, dir));  // envmap_local_direction
   float8 u = atan2_approx_lanes(d.x, -d.z) * (0.5f * M_1_PI_F);
   u -= floor(u);
   float8 v = acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F;
