@@ -1,8 +1,8 @@
 // Sampling tables for environment maps: the weights of the map's sample grid (luminance times
 // the mean sine of each row's band of latitudes, in its texels' fourth channel) and their alias
-// tables, so that next-event
-// estimation draws directions from the bilinear interpolation of those weights (about in
-// proportion to the map's radiance). The kernels read them (kernels/light/envmap.h).
+// tables, so that next-event estimation draws directions from the bilinear interpolation of those
+// weights (about in proportion to the map's radiance). The kernels read them
+// (kernels/light/envmap.h).
 #pragma once
 #include <vector>
 

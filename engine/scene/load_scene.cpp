@@ -72,9 +72,11 @@ void compute_bounds(Scene& s) {
 
 // Top-level definitions that only matter when something refers to them.
 bool is_definition(const std::string& tag) { return tag == "bsdf" || tag == "texture"; }
-bool is_value(const std::string& tag) {
-  return tag == "boolean" || tag == "integer" || tag == "float" || tag == "string" || tag == "rgb" ||
-         tag == "spectrum" || tag == "point" || tag == "vector" || tag == "transform";
+// A named value at the top level: a property of the scene itself.
+bool is_scene_property(const XmlNode& node) {
+  const std::string& tag = node.tag;
+  return node.attr("name") && (tag == "boolean" || tag == "integer" || tag == "float" || tag == "string" ||
+                               tag == "rgb" || tag == "spectrum" || tag == "point" || tag == "vector");
 }
 
 }  // namespace
@@ -108,8 +110,8 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
       load_shape(ctx, node);
     } else if (tag == "emitter") {
       emitters.push_back(&node);
-    } else if (is_definition(tag) || is_value(tag)) {
-      continue;  // values: the scene's properties, read above or reported as unknown below
+    } else if (is_definition(tag) || is_scene_property(node)) {
+      continue;  // properties: read above, or reported as unknown parameters below
     } else if (tag == "medium" || tag == "phase" || tag == "volume") {
       ctx.unsupported(node, "participating media not supported: ignored");
     } else {
