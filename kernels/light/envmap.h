@@ -13,10 +13,19 @@
 #include "scene/scene_data.h"
 #include "shared/environment_table.h"
 
-// u from atan2(x, -z), v = theta / pi measured from +y (local frame).
+// u from atan2(x, -z), v = theta / pi measured from +y (local frame). Written once for values
+// of type F with their atan2 (float here, float8 in light/envmap_lanes.h).
+#define ENVMAP_UV(name, F, ATAN2)                       \
+  inline void name(F x, F y, F z, F* u, F* v) {         \
+    F a = ATAN2(x, -z) * (0.5f * M_1_PI_F);             \
+    *u = a - floor(a);                                  \
+    *v = acos(clamp(y, -1.0f, 1.0f)) * M_1_PI_F;        \
+  }
+ENVMAP_UV(envmap_uv_of, float, atan2_approx)
 inline float2 envmap_uv(float3 d) {
-  float u = atan2_approx(d.x, -d.z) * (0.5f * M_1_PI_F);
-  return (float2)(u - floor(u), acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F);
+  float u, v;
+  envmap_uv_of(d.x, d.y, d.z, &u, &v);
+  return (float2)(u, v);
 }
 // theta = pi v, phi = 2 pi u, by sinpi and cospi (no argument reduction by pi).
 inline float3 envmap_direction(float2 uv) {
@@ -26,6 +35,21 @@ inline float3 envmap_direction(float2 uv) {
 
 // The four grid samples around (u, v): columns c0, c1 = c0 + 1 (wrapped) with weight fc on c1,
 // rows r0, r0 + 1 with weight fr on r0 + 1. Needs w >= 1, h >= 2 (the loader pads smaller maps).
+// Written once for values of type F and I with their conversions (float and int here, float8 and
+// int8 in light/envmap_lanes.h).
+#define ENVMAP_CELL(name, F, I, TO_I, TO_F)                                           \
+  inline void name(F u, F v, int w, int h, I* c0, I* c1, I* r0, F* fc, F* fr) {       \
+    F x = u * (float)w - 0.5f;                                                        \
+    x -= floor(x / (float)w) * (float)w; /* [0, w) */                                 \
+    *c0 = min(TO_I(x), w - 1);                                                        \
+    *fc = clamp(x - TO_F(*c0), 0.0f, 1.0f);                                           \
+    *c1 = select(*c0 + 1, (I)(0), *c0 + 1 == w);                                      \
+    F y = clamp(v, 0.0f, 1.0f) * (float)(h - 1);                                      \
+    *r0 = min(TO_I(y), h - 2);                                                        \
+    *fr = clamp(y - TO_F(*r0), 0.0f, 1.0f);                                           \
+  }
+ENVMAP_CELL(envmap_cell_of, float, int, convert_int, convert_float)
+
 typedef struct EnvGridCell {
   int c0, c1, r0;
   float fc, fr;
@@ -33,14 +57,7 @@ typedef struct EnvGridCell {
 
 inline EnvGridCell envmap_cell(float2 uv, int w, int h) {
   EnvGridCell g;
-  float x = uv.x * (float)w - 0.5f;
-  x -= floor(x / (float)w) * (float)w;  // [0, w)
-  g.c0 = min((int)x, w - 1);
-  g.fc = clamp(x - (float)g.c0, 0.0f, 1.0f);
-  g.c1 = g.c0 + 1 == w ? 0 : g.c0 + 1;
-  float y = clamp(uv.y, 0.0f, 1.0f) * (float)(h - 1);
-  g.r0 = min((int)y, h - 2);
-  g.fr = clamp(y - (float)g.r0, 0.0f, 1.0f);
+  envmap_cell_of(uv.x, uv.y, w, h, &g.c0, &g.c1, &g.r0, &g.fc, &g.fr);
   return g;
 }
 
@@ -84,20 +101,24 @@ inline float envmap_uv_pdf(const SceneData* s, __global const GdrTexture* t, flo
   }
 SAMPLE_LINEAR(sample_linear, float)
 
+// u rescaled to [0, 1) inside the interval an alias bucket gave, from f, u's place in the bucket,
+// and keep, the bucket's probability of keeping its own interval: it is uniform there, whichever
+// bucket gave it. Written once for values of type F (float, float8 in light/envmap_lanes.h).
+#define ALIAS_RESCALED(name, F)                                                                     \
+  inline F name(F f, F keep) {                                                                      \
+    return select(clamp((f - keep) / (1.0f - keep), 0.0f, 0x1.fffffep-1f), f / keep, f < keep);     \
+  }
+ALIAS_RESCALED(alias_rescaled, float)
+
 // An interval of n drawn with the alias table `table` (entry j: the probability of keeping j, then
-// the interval taken otherwise), and u rescaled to [0, 1) inside the drawn interval: it is
-// uniform there, whichever bucket gave it.
+// the interval taken otherwise), and u rescaled to [0, 1) inside the drawn interval.
 inline int sample_alias(__global const float* table, int n, float u, float* rescaled) {
   float x = u * (float)n;
   int j = min((int)x, n - 1);
   float f = fmin(x - (float)j, 0x1.fffffep-1f);
   float keep = table[2 * j];
-  if (f < keep) {
-    *rescaled = f / keep;
-    return j;
-  }
-  *rescaled = clamp((f - keep) / (1.0f - keep), 0.0f, 0x1.fffffep-1f);
-  return (int)table[2 * j + 1];
+  *rescaled = alias_rescaled(f, keep);
+  return f < keep ? j : (int)table[2 * j + 1];
 }
 
 // At v = fr inside a band whose rows' sums are a and b, the band's density is

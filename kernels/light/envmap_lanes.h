@@ -10,6 +10,10 @@
 #if defined(GDR_LIGHT_ENVMAP)
 SAMPLE_LINEAR(sample_linear_lanes, float8)
 ENVMAP_FIRST_ROW_SHARE(envmap_first_row_share_lanes, float8)
+ALIAS_RESCALED(alias_rescaled_lanes, float8)
+ENVMAP_UV(envmap_uv_lanes, float8, atan2_approx_lanes)
+ENVMAP_CELL(envmap_cell_lanes, float8, int8, convert_int8, convert_float8)
+ENVMAP_SOLID_ANGLE(envmap_solid_angle_lanes, float8, Lanes3)
 
 // sample_alias for each lane: the interval of n drawn by u from the alias table at offset[k] of
 // `table`, and u rescaled inside it.
@@ -30,9 +34,8 @@ inline int8 sample_alias_lanes(__global const float* table, const int* offset, i
     alias[k] = table[offset[k] + 2 * jk[k] + 1];
   }
   float8 kp = vload8(0, keep);
-  int8 kept = f < kp;
-  *rescaled = select(clamp((f - kp) / (1.0f - kp), 0.0f, 0x1.fffffep-1f), f / kp, kept);
-  return select(convert_int8(vload8(0, alias)), j, kept);
+  *rescaled = alias_rescaled_lanes(f, kp);
+  return select(convert_int8(vload8(0, alias)), j, f < kp);
 }
 
 // Two values a lane: values[i0[k]] and values[i1[k]].
@@ -92,19 +95,6 @@ inline void envmap_sample_uv_lanes(const SceneData* s, __global const GdrTexture
   *v = (convert_float8(band) + fr) / (float)(h - 1);
 }
 
-// envmap_cell for each lane: columns c0, c1 (weight fc on c1), rows r0, r0 + 1 (weight fr).
-inline void envmap_cell_lanes(float8 u, float8 v, int w, int h, int8* c0, int8* c1, int8* r0, float8* fc,
-                              float8* fr) {
-  float8 x = u * (float)w - 0.5f;
-  x -= floor(x / (float)w) * (float)w;
-  *c0 = min(convert_int8(x), w - 1);
-  *fc = clamp(x - convert_float8(*c0), 0.0f, 1.0f);
-  *c1 = select(*c0 + 1, (int8)(0), *c0 + 1 == w);
-  float8 y = clamp(v, 0.0f, 1.0f) * (float)(h - 1);
-  *r0 = min(convert_int8(y), h - 2);
-  *fr = clamp(y - convert_float8(*r0), 0.0f, 1.0f);
-}
-
 // envmap_lookup_pdf at each lane's (u, v) in `on`: the texel *texel and *p_uv.
 inline void envmap_lookup_pdf_lanes(const SceneData* s, __global const GdrTexture* t, int8 on, float8 u, float8 v,
                                     Lanes3* texel, float8* p_uv) {
@@ -143,12 +133,6 @@ inline void envmap_lookup_pdf_lanes(const SceneData* s, __global const GdrTextur
   *p_uv = select((float8)(0.0f), m[3] * (float)w * (float)(h - 1), on);
 }
 
-// envmap_solid_angle for each lane: the solid-angle pdf of local direction d from p_uv.
-inline float8 envmap_solid_angle_lanes(float pmf, Lanes3 d, float8 p_uv) {
-  float8 sin_theta = sqrt(d.x * d.x + d.z * d.z);
-  return select((float8)(0.0f), pmf * p_uv / (2.0f * M_PI_F * M_PI_F * sin_theta), sin_theta > 0.0f);
-}
-
 // A texel of map l times its radiance scale.
 inline Lanes3 envmap_scaled_lanes(__global const GdrLight* l, Lanes3 texel) {
   float3 scale = vload3(0, l->radiance);
@@ -174,9 +158,8 @@ inline Lanes3 envmap_sample_at_lanes(__global const GdrLight* l, float pmf, floa
 inline Lanes3 envmap_eval_lanes(const SceneData* s, __global const GdrLight* l, float pmf, int8 on, Lanes3 dir,
                                 float8* pdf) {
   Lanes3 d = lanes3_normalize_or_zero(xform_vector_lanes(l->to_local, dir));  // envmap_local_direction
-  float8 u = atan2_approx_lanes(d.x, -d.z) * (0.5f * M_1_PI_F);
-  u -= floor(u);
-  float8 v = acos(clamp(d.y, -1.0f, 1.0f)) * M_1_PI_F;
+  float8 u, v;
+  envmap_uv_lanes(d.x, d.y, d.z, &u, &v);
   __global const GdrTexture* t = &s->textures[l->texture];
   float8 p_uv;
   Lanes3 texel;

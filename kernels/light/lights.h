@@ -55,11 +55,15 @@ inline float3 envmap_local_direction(__global const GdrLight* l, float3 dir) {
 }
 
 // Solid-angle pdf of local direction d of a map chosen with probability pmf, from its density
-// p_uv per unit u and v there (envmap_uv_pdf). d(solid angle) = 2 pi^2 sin(theta) du dv.
-inline float envmap_solid_angle(float pmf, float3 d, float p_uv) {
-  float sin_theta = sqrt(d.x * d.x + d.z * d.z);
-  return sin_theta > 0.0f ? pmf * p_uv / (2.0f * M_PI_F * M_PI_F * sin_theta) : 0.0f;
-}
+// p_uv per unit u and v there (envmap_uv_pdf). d(solid angle) = 2 pi^2 sin(theta) du dv. Written
+// once for values of type F and directions of type D (float and float3 here, float8 and Lanes3 in
+// light/envmap_lanes.h).
+#define ENVMAP_SOLID_ANGLE(name, F, D)                                                                 \
+  inline F name(float pmf, D d, F p_uv) {                                                              \
+    F sin_theta = sqrt(d.x * d.x + d.z * d.z);                                                         \
+    return select((F)(0.0f), pmf * p_uv / (2.0f * M_PI_F * M_PI_F * sin_theta), sin_theta > 0.0f);   \
+  }
+ENVMAP_SOLID_ANGLE(envmap_solid_angle, float, float3)
 
 // Solid-angle pdf of sampling local direction d (at lat-long position uv) from the map of light
 // l, chosen with probability pmf.
