@@ -102,7 +102,6 @@ __attribute__((always_inline)) inline void gpt_shade_group(
   GdrPathState* st = &base.path;
   GptOffsetState o[GPT_OFFSETS];
   for (int k = 0; k < GPT_OFFSETS; ++k) o[k] = offsets[g * GPT_OFFSETS + k];
-  for (int j = 0; j < GPT_PEND_COUNT; ++j) pend[g * GPT_PEND_COUNT + j] = (float4)(0.0f);
 
   float3 dir = (float3)(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
   float3 beta = vload3(0, st->throughput);
@@ -320,11 +319,12 @@ __attribute__((always_inline)) inline void gpt_shade_group(
       float3 cb = checked(w_base * c_base, nonfinite);
       pend[g * GPT_PEND_COUNT + GPT_PEND_BASE(k)] = (float4)(cb, 0.0f);
       base_ray_needed |= cb.x > 0.0f || cb.y > 0.0f || cb.z > 0.0f;
+      float3 co = (float3)(0.0f);
       if (!own_ray && (o[k].mode == GPT_MODE_JOINED || o[k].mode == GPT_MODE_JOINED_RECENT)) {
-        float3 co = checked(c_off, nonfinite);
-        pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
+        co = checked(c_off, nonfinite);
         base_ray_needed |= co.x > 0.0f || co.y > 0.0f || co.z > 0.0f;
       }
+      pend[g * GPT_PEND_COUNT + GPT_PEND_JOINED(k)] = (float4)(co, 0.0f);
     }
     for (int k = 0; k < GPT_OFFSETS; ++k) {
       if (own_ray_of[k]) shade_append_shadow(out, so[k].p, so[k].ng, &lights[k], GPT_SHADOW_ID(g, 1 + k));

@@ -28,23 +28,29 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   LaneArray3 p, ng, ns, wo, beta;
   BsdfLaneArrays bsdf;
   for (int k = 0; k < LANES; ++k) {
-    active[k] = 0;
-    slot[k] = pixel[k] = sample[k] = depth[k] = 0u;
-    lane_array3_set(&p, k, (float3)(0.0f));
-    lane_array3_set(&ng, k, (float3)(0.0f, 0.0f, 1.0f));
-    lane_array3_set(&ns, k, (float3)(0.0f, 0.0f, 1.0f));
-    lane_array3_set(&wo, k, (float3)(0.0f, 0.0f, 1.0f));
-    lane_array3_set(&beta, k, (float3)(0.0f));
-    bsdf_lanes_clear(&bsdf, k);
-    uint e = base + (uint)k;
-    if (e >= count || path_no_segments(params.max_depth)) continue;
-    uint q = direct ? e : sorted[first + e];
-    uint sl = queue_in[q];
-    GdrPathState st = paths[sl];
-    GdrRayHit rh = rays_in[q];
+    uint e = base + (uint)k, sl = 0u;
+    GdrPathState st;
+    GdrRayHit rh;
     Surface su;
-    if (!pt_entry_hit(&params, &s, direct, &rh, &paths[sl], &st, film, counters, &su)) continue;
-    if (path_depth_reached(&st, params.max_depth)) continue;
+    active[k] = 0;
+    if (e < count && !path_no_segments(params.max_depth)) {
+      uint q = direct ? e : sorted[first + e];
+      sl = queue_in[q];
+      st = paths[sl];
+      rh = rays_in[q];
+      active[k] = pt_entry_hit(&params, &s, direct, &rh, &paths[sl], &st, film, counters, &su) &&
+                  !path_depth_reached(&st, params.max_depth);
+    }
+    if (!active[k]) {  // harmless values, written once: most lanes are active
+      slot[k] = pixel[k] = sample[k] = depth[k] = 0u;
+      lane_array3_set(&p, k, (float3)(0.0f));
+      lane_array3_set(&ng, k, (float3)(0.0f, 0.0f, 1.0f));
+      lane_array3_set(&ns, k, (float3)(0.0f, 0.0f, 1.0f));
+      lane_array3_set(&wo, k, (float3)(0.0f, 0.0f, 1.0f));
+      lane_array3_set(&beta, k, (float3)(0.0f));
+      bsdf_lanes_clear(&bsdf, k);
+      continue;
+    }
     Bsdf b = surface_bsdf_of_type(&s, &su, type);
     active[k] = -1;  // a mask, as the lane steps' comparisons give
     slot[k] = sl;

@@ -50,6 +50,7 @@ typedef struct GdrGptParams {
 // Next-event contributions waiting for their shadow rays (float4 each, per group): the base's
 // share for pair k and joined offset k's (both behind the base's shadow ray), traced offset k's
 // (behind its own shadow ray), and the base's primal (GPT_ACC_PRIMAL's, behind the base's ray).
+// A step writes the entries behind each ray it appends, and only those: gpt_shadow reads no other.
 #define GPT_PEND_BASE(k) (k)
 #define GPT_PEND_JOINED(k) (4 + (k))
 #define GPT_PEND_OWN(k) (8 + (k))
