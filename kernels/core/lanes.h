@@ -32,6 +32,18 @@ inline void lanes3_store(Lanes3 v, LaneArray3* a) {
   vstore8(v.z, 0, a->z);
 }
 
+inline Lanes3 lanes3_add(Lanes3 a, Lanes3 b) {
+  Lanes3 v = {a.x + b.x, a.y + b.y, a.z + b.z};
+  return v;
+}
+inline Lanes3 lanes3_sub(Lanes3 a, Lanes3 b) {
+  Lanes3 v = {a.x - b.x, a.y - b.y, a.z - b.z};
+  return v;
+}
+inline Lanes3 lanes3_cross(Lanes3 a, Lanes3 b) {
+  Lanes3 v = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+  return v;
+}
 inline Lanes3 lanes3_mul(Lanes3 a, Lanes3 b) {
   Lanes3 v = {a.x * b.x, a.y * b.y, a.z * b.z};
   return v;

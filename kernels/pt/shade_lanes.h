@@ -2,11 +2,11 @@
 // where PoCL runs a work group's items one after another in scalar code (README "Tests and
 // benchmarks"); the materials whose BSDF has a lane form (bsdf/bsdf_lanes.h: diffuse, smooth
 // plastic). The estimator is pt_shade_hit's for such a hit, from the same random numbers: what
-// touches memory per entry (the queue entry and its hit: pt_entry_hit; the material, the light
-// sample, the appends) runs lane by lane through the scalar helpers (an environment map's
-// samples step by step over the lanes: light/light_lanes.h); the arithmetic between
-// (Philox, the frame, the BSDF's value, pdf and sample, MIS, Russian roulette) runs on float8
-// lanes. Included by pt.cl after pt_entry_hit and PT_SHADE_ARGS.
+// touches memory per entry (the queue entry and its hit: pt_entry_hit; the material, the
+// appends) runs lane by lane through the scalar helpers; the light samples are drawn on lanes
+// for area lights and environment maps (light/light_lanes.h), lane by lane for the others; the
+// arithmetic between (Philox, the frame, the BSDF's value, pdf and sample, MIS, Russian
+// roulette) runs on float8 lanes. Included by pt.cl after pt_entry_hit and PT_SHADE_ARGS.
 #pragma once
 #include "bsdf/bsdf_lanes.h"
 #include "core/lanes.h"
@@ -71,23 +71,11 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   RngBlockLanes ub = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_BSDF(depth8));
 
   // The light samples (nee_sample without its side test, which the lane step makes).
-  int sampled[LANES], light_delta[LANES], nee_lane[LANES];
-  float light_pdf[LANES];
-  LaneArray3 light_wi, light_radiance;
-  float ul_x[LANES], ul_y[LANES], ul_z[LANES];
-  vstore8(ul.x, 0, ul_x);
-  vstore8(ul.y, 0, ul_y);
-  vstore8(ul.z, 0, ul_z);
+  int nee_lane[LANES];
   int nee = params.strategy != PT_STRATEGY_BSDF && s.light_count > 0;
   for (int k = 0; k < LANES; ++k) nee_lane[k] = active[k] && nee;
-  LightSample ls[LANES];
-  light_sample_lanes(&s, nee_lane, ul_x, ul_y, ul_z, &p, sampled, ls);
-  for (int k = 0; k < LANES; ++k) {
-    light_pdf[k] = sampled[k] ? ls[k].pdf : 1.0f;
-    light_delta[k] = sampled[k] ? ls[k].delta : 0;
-    lane_array3_set(&light_wi, k, sampled[k] ? ls[k].wi : (float3)(0.0f, 0.0f, 1.0f));
-    lane_array3_set(&light_radiance, k, sampled[k] ? ls[k].radiance : (float3)(0.0f));
-  }
+  LightSampleLanes ls;
+  light_sample_lanes(&s, nee_lane, ul.x, ul.y, ul.z, &p, &ls);
 
   // Lanes: next-event estimation's contribution, then the BSDF sample and roulette.
   Lanes3 NG = lanes3_load(&ng), BETA = lanes3_load(&beta);
@@ -100,17 +88,17 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   Lanes3 wo_n = lanes3_normalize_or_zero(wo_local);
   wo_n.z *= flip_sign;
 
-  Lanes3 LWI = lanes3_load(&light_wi);
+  Lanes3 LWI = lanes3_load(&ls.wi);
   Lanes3 wi_local = frame_lanes_to_local(&frame, LWI);
-  int8 shadow_ok = (vload8(0, sampled) != 0) & (lanes3_dot(LWI, NG) * wi_local.z > 0.0f);
+  int8 shadow_ok = (vload8(0, ls.ok) != 0) & (lanes3_dot(LWI, NG) * wi_local.z > 0.0f);
   Lanes3 wi_n = lanes3_normalize_or_zero(wi_local);
   wi_n.z *= flip_sign;
   float8 bsdf_pdf;
   Lanes3 f = bsdf_lanes_eval(type, &B, wo_n, wi_n, &bsdf_pdf);
-  float8 lpdf = vload8(0, light_pdf);
-  int8 unweighted = (vload8(0, light_delta) != 0) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
+  float8 lpdf = vload8(0, ls.pdf);
+  int8 unweighted = (vload8(0, ls.delta) != 0) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
   float8 w = select(power_heuristic_lanes(lpdf, bsdf_pdf), (float8)(1.0f), unweighted);
-  Lanes3 c = lanes3_scale(lanes3_mul(lanes3_mul(BETA, f), lanes3_load(&light_radiance)), w / lpdf);
+  Lanes3 c = lanes3_scale(lanes3_mul(lanes3_mul(BETA, f), lanes3_load(&ls.radiance)), w / lpdf);
   int8 c_positive = shadow_ok & (lanes3_max(c) > 0.0f);
   LaneArray3 shadow_value;
   lanes3_store(c, &shadow_value);
@@ -158,7 +146,7 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   for (int k = 0; k < LANES; ++k) {
     float3 pk = lane_array3_get(&p, k), ngk = lane_array3_get(&ng, k);
     if (shadow[k]) {
-      write_light_ray(&shadow_rays[want[0]], pk, ngk, lane_array3_get(&light_wi, k), ls[k].dist, pixel[k]);
+      write_light_ray(&shadow_rays[want[0]], pk, ngk, lane_array3_get(&ls.wi, k), ls.dist[k], pixel[k]);
       shadow_values[want[0]] = (float4)(lane_array3_get(&shadow_value, k), 0.0f);
       want[0] += 1u;
     }
