@@ -8,9 +8,7 @@
 // arithmetic between (Philox, the frame, the BSDF's value, pdf and sample, MIS, Russian
 // roulette) runs on float8 lanes. Included by pt.cl after pt_entry_hit and PT_SHADE_ARGS.
 #pragma once
-#include "bsdf/bsdf_lanes.h"
-#include "core/lanes.h"
-#include "light/light_lanes.h"
+#include "path/lane_steps.h"
 
 __attribute__((always_inline)) inline void pt_shade_lanes(
     int type, GdrPtParams params, uint count, uint first, int direct, __global const uint* sorted,
@@ -70,31 +68,16 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   RngBlockLanes ul = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_LIGHT(depth8));
   RngBlockLanes ub = rng_block_lanes(params.seed, pixel8, sample8, RNG_BLOCK_BSDF(depth8));
 
-  // The light samples (nee_sample without its side test, which the lane step makes).
+  // Lanes: next-event estimation's contribution, then the BSDF sample and roulette.
+  VertexLanes v = vertex_lanes(type, &bsdf, &ns, &ng, &wo);
   int nee_lane[LANES];
   int nee = params.strategy != PT_STRATEGY_BSDF && s.light_count > 0;
   for (int k = 0; k < LANES; ++k) nee_lane[k] = active[k] && nee;
   LightSampleLanes ls;
-  light_sample_lanes(&s, nee_lane, ul.x, ul.y, ul.z, &p, &ls);
-
-  // Lanes: next-event estimation's contribution, then the BSDF sample and roulette.
-  Lanes3 NG = lanes3_load(&ng), BETA = lanes3_load(&beta);
-  BsdfLanes B = bsdf_lanes_load(&bsdf);
-  FrameLanes frame = frame_lanes_from_normal(lanes3_load(&ns));
-  Lanes3 wo_local = frame_lanes_to_local(&frame, lanes3_load(&wo));
-  // bsdf_flip_side: a two-sided surface seen from below shades as from above.
-  int8 flip = B.twosided & (wo_local.z < 0.0f);
-  float8 flip_sign = select((float8)(1.0f), (float8)(-1.0f), flip);
-  Lanes3 wo_n = lanes3_normalize_or_zero(wo_local);
-  wo_n.z *= flip_sign;
-
-  Lanes3 LWI = lanes3_load(&ls.wi);
-  Lanes3 wi_local = frame_lanes_to_local(&frame, LWI);
-  int8 shadow_ok = (vload8(0, ls.ok) != 0) & (lanes3_dot(LWI, NG) * wi_local.z > 0.0f);
-  Lanes3 wi_n = lanes3_normalize_or_zero(wi_local);
-  wi_n.z *= flip_sign;
+  Lanes3 f;
   float8 bsdf_pdf;
-  Lanes3 f = bsdf_lanes_eval(type, &B, wo_n, wi_n, &bsdf_pdf);
+  int8 shadow_ok = nee_lanes(&s, &v, nee_lane, ul, &p, &ls, &f, &bsdf_pdf);
+  Lanes3 BETA = lanes3_load(&beta);
   float8 lpdf = vload8(0, ls.pdf);
   int8 unweighted = (vload8(0, ls.delta) != 0) | (int8)(params.strategy == PT_STRATEGY_LIGHT ? -1 : 0);
   float8 w = select(power_heuristic_lanes(lpdf, bsdf_pdf), (float8)(1.0f), unweighted);
@@ -106,31 +89,19 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   vstore8(c_positive & lanes3_finite(c), 0, shadow);
   vstore8(c_positive & ~lanes3_finite(c), 0, shadow_nonfinite);
 
-  // bsdf_sample from ub.xyz, then path_continue's side test and roulette.
-  Lanes3 wi_s, weight;
-  float8 pdf;
-  int8 delta;
-  int8 sample_ok = bsdf_lanes_sample(type, &B, wo_n, ub.x, ub.y, ub.z, &wi_s, &weight, &pdf, &delta);
-  wi_s.z *= flip_sign;
-  Lanes3 wi = frame_lanes_to_world(&frame, wi_s);
-  sample_ok &= lanes3_dot(wi, NG) * wi_s.z > 0.0f;
-  Lanes3 t = lanes3_mul(BETA, weight);
-  int8 t_finite = lanes3_finite(t);
-  float8 t_max = lanes3_max(t);
-  float8 rr = fmin(t_max, 0.95f);
-  int8 roulette = convert_int8(depth8) + 1 >= params.rr_depth;
-  int8 survives = vload8(0, active) & sample_ok & t_finite & (t_max > 0.0f) & (~roulette | (ub.w < rr));
-  t.x = select(t.x, t.x / rr, roulette);
-  t.y = select(t.y, t.y / rr, roulette);
-  t.z = select(t.z, t.z / rr, roulette);
+  Lanes3 t = BETA, wi;
+  float8 pdf, rr;
+  int8 delta, overflow;
+  int8 survives = continue_lanes(&v, ub, convert_int8(depth8), params.rr_depth, &t, &wi, &pdf, &delta, &rr, &overflow);
+  int8 on = vload8(0, active);
   LaneArray3 next_beta, next_wi;
   lanes3_store(t, &next_beta);
   lanes3_store(wi, &next_wi);
   float next_pdf[LANES];
   vstore8(pdf, 0, next_pdf);
   int next[LANES], next_nonfinite[LANES], next_delta[LANES];
-  vstore8(survives, 0, next);
-  vstore8(vload8(0, active) & sample_ok & ~t_finite, 0, next_nonfinite);
+  vstore8(on & survives, 0, next);
+  vstore8(on & overflow, 0, next_nonfinite);
   vstore8(delta, 0, next_delta);
 
   // Per lane: the work item's appends, reserved with the group's.
