@@ -35,6 +35,8 @@ inline void light_sample_lanes_merge(LightSampleLanes* out, int8 on, Lanes3 wi, 
 }
 
 #if defined(GDR_LIGHT_AREA)
+AREA_SOLID_ANGLE(area_solid_angle_lanes, float8)
+
 // light_sample for the lanes `on`, whose lights (light[k]) are area lights: each triangle's
 // vertices (and shading normals) are read lane by lane; the point drawn by (u1, u2), surface_at's
 // normals (the geometric one turned to the shading one's side) and area, and light_connect's
@@ -101,8 +103,7 @@ inline void area_light_sample_lanes(const SceneData* s, int8 on, const int* ligh
   Lanes3 wi = {d.x / dist, d.y / dist, d.z / dist};
   float8 cos_light = -lanes3_dot(ng, wi);
   Lanes3 radiance = lanes3_scale(lanes3_load(&le), select((float8)(0.0f), (float8)(1.0f), cos_light > 0.0f));
-  float8 pdf = select(vload8(0, pmf) * dist * dist / (cos_light * area), (float8)(0.0f),
-                      (cos_light <= 0.0f) | (area <= 0.0f));
+  float8 pdf = area_solid_angle_lanes(vload8(0, pmf), area, dist, cos_light);
   light_sample_lanes_merge(out, on & (dist > 0.0f) & (pdf > 0.0f) & isfinite(pdf), wi, radiance, pdf, dist);
 }
 #endif

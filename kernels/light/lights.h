@@ -156,10 +156,18 @@ inline float3 area_radiance(const SceneData* s, int index, float3 ng, float3 wo)
   return dot(ng, wo) > 0.0f ? vload3(0, s->lights[index].radiance) : (float3)(0.0f);
 }
 
+// Solid-angle pdf of a uniform point on a triangle of the given area, chosen with probability pmf,
+// seen at distance dist under the light's cosine cos_light. Written once for values of type F
+// (float here, float8 in light/light_lanes.h).
+#define AREA_SOLID_ANGLE(name, F)                                                                         \
+  inline F name(F pmf, F area, F dist, F cos_light) {                                                     \
+    return select(pmf * dist * dist / (cos_light * area), (F)(0.0f), (cos_light <= 0.0f) | (area <= 0.0f)); \
+  }
+AREA_SOLID_ANGLE(area_solid_angle, float)
+
 // Solid-angle pdf with which light sampling picks the point hit on triangle light `index`.
 inline float area_pdf(const SceneData* s, int index, float area, float dist, float cos_light) {
-  if (cos_light <= 0.0f || area <= 0.0f) return 0.0f;
-  return light_pmf(s, index) * dist * dist / (cos_light * area);
+  return area_solid_angle(light_pmf(s, index), area, dist, cos_light);
 }
 
 // Spot emission toward `dir` (unit, from the light) relative to its intensity: Mitsuba's falloff,

@@ -1,8 +1,7 @@
-// The path stages of a material queue's lane kernels (pt/shade_lanes.h, gpt/shade_lanes.h) on
-// eight lanes: a vertex's frame and BSDF, next-event estimation's light sample and the BSDF
-// toward it (path/nee.h), and continuation by BSDF sampling with Russian roulette
-// (path/continuation.h, radiance transport), each its scalar stage's arithmetic from the same
-// random numbers.
+// The path stages of a material queue's lane kernel (pt/shade_lanes.h) on eight lanes: a
+// vertex's frame and BSDF, next-event estimation's light sample and the BSDF toward it
+// (path/nee.h), and continuation by BSDF sampling with Russian roulette (path/continuation.h,
+// radiance transport), each its scalar stage's arithmetic from the same random numbers.
 #pragma once
 #include "bsdf/bsdf_lanes.h"
 #include "core/lanes.h"
