@@ -32,10 +32,6 @@ inline void lanes3_store(Lanes3 v, LaneArray3* a) {
   vstore8(v.z, 0, a->z);
 }
 
-inline Lanes3 lanes3_add(Lanes3 a, Lanes3 b) {
-  Lanes3 v = {a.x + b.x, a.y + b.y, a.z + b.z};
-  return v;
-}
 inline Lanes3 lanes3_sub(Lanes3 a, Lanes3 b) {
   Lanes3 v = {a.x - b.x, a.y - b.y, a.z - b.z};
   return v;

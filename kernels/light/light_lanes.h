@@ -82,15 +82,17 @@ inline void area_light_sample_lanes(const SceneData* s, int8 on, const int* ligh
   float8 su = sqrt(u1);
   float8 b1 = su * (1.0f - u2), b2 = su * u2, b0 = 1.0f - b1 - b2;
   Lanes3 P0 = lanes3_load(&v0), P1 = lanes3_load(&v1), P2 = lanes3_load(&v2);
-  Lanes3 point = lanes3_add(lanes3_add(lanes3_scale(P0, b0), lanes3_scale(P1, b1)), lanes3_scale(P2, b2));
+  // One expression a component, as surface_at's: the compiler contracts both alike.
+  Lanes3 point = {b0 * P0.x + b1 * P1.x + b2 * P2.x, b0 * P0.y + b1 * P1.y + b2 * P2.y,
+                  b0 * P0.z + b1 * P1.z + b2 * P2.z};
   Lanes3 cr = lanes3_cross(lanes3_sub(P1, P0), lanes3_sub(P2, P0));
   float8 len = sqrt(lanes3_dot(cr, cr));
   float8 area = 0.5f * len;
   int8 has_len = len > 0.0f;
   Lanes3 ng = {select((float8)(0.0f), cr.x / len, has_len), select((float8)(0.0f), cr.y / len, has_len),
                select((float8)(1.0f), cr.z / len, has_len)};
-  Lanes3 n = lanes3_add(lanes3_add(lanes3_scale(lanes3_load(&n0), b0), lanes3_scale(lanes3_load(&n1), b1)),
-                        lanes3_scale(lanes3_load(&n2), b2));
+  Lanes3 N0 = lanes3_load(&n0), N1 = lanes3_load(&n1), N2 = lanes3_load(&n2);
+  Lanes3 n = {b0 * N0.x + b1 * N1.x + b2 * N2.x, b0 * N0.y + b1 * N1.y + b2 * N2.y, b0 * N0.z + b1 * N1.z + b2 * N2.z};
   float8 nl = sqrt(lanes3_dot(n, n));
   int8 use_n = (vload8(0, normals) != 0) & (nl > 0.0f) & isfinite(nl);
   Lanes3 n_unit = {n.x / nl, n.y / nl, n.z / nl};
