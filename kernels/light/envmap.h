@@ -27,10 +27,15 @@ inline float2 envmap_uv(float3 d) {
   envmap_uv_of(d.x, d.y, d.z, &u, &v);
   return (float2)(u, v);
 }
+// The local direction's components at polar angle theta (from +y) and azimuth phi, from their
+// sines and cosines: envmap_uv's inverse, written once for floats and lanes (light/envmap_lanes.h).
+#define ENVMAP_DIRECTION_COMPONENTS(sin_theta, cos_theta, sin_phi, cos_phi) \
+  (sin_theta) * (sin_phi), (cos_theta), -(sin_theta) * (cos_phi)
+
 // theta = pi v, phi = 2 pi u, by sinpi and cospi (no argument reduction by pi).
 inline float3 envmap_direction(float2 uv) {
   float sin_theta = sinpi(uv.y), phi = 2.0f * uv.x;
-  return (float3)(sin_theta * sinpi(phi), cospi(uv.y), -sin_theta * cospi(phi));
+  return (float3)(ENVMAP_DIRECTION_COMPONENTS(sin_theta, cospi(uv.y), sinpi(phi), cospi(phi)));
 }
 
 // The four grid samples around (u, v): columns c0, c1 = c0 + 1 (wrapped) with weight fc on c1,

@@ -147,7 +147,7 @@ inline Lanes3 envmap_sample_at_lanes(__global const GdrLight* l, float pmf, floa
   float8 sin_theta, cos_theta, sin_phi, cos_phi;
   sincospi_lanes(v, &sin_theta, &cos_theta);
   sincospi_lanes(2.0f * u, &sin_phi, &cos_phi);
-  Lanes3 d = {sin_theta * sin_phi, cos_theta, -sin_theta * cos_phi};
+  Lanes3 d = {ENVMAP_DIRECTION_COMPONENTS(sin_theta, cos_theta, sin_phi, cos_phi)};
   *pdf = envmap_solid_angle_lanes(pmf, d, p_uv);
   *radiance = envmap_scaled_lanes(l, texel);
   return lanes3_normalize_or_zero(xform_vector_lanes(l->to_world, d));

@@ -48,11 +48,10 @@ inline int8 nee_lanes(const SceneData* s, const VertexLanes* v, const int* want,
 
 // path_continue for the lanes `depth` bounces into their paths, from their BSDF blocks ub: the
 // sample, its side test, and roulette after rr_depth bounces. *beta becomes the continuation's
-// throughput; *wi (world), *pdf and *delta are the sample's, *rr the survival probability (1
-// without roulette). *nonfinite: the lanes whose throughput overflowed. Returns the lanes that
-// continue.
+// throughput; *wi (world), *pdf and *delta are the sample's. *nonfinite: the lanes whose
+// throughput overflowed. Returns the lanes that continue.
 inline int8 continue_lanes(const VertexLanes* v, RngBlockLanes ub, int8 depth, int rr_depth, Lanes3* beta, Lanes3* wi,
-                           float8* pdf, int8* delta, float8* rr, int8* nonfinite) {
+                           float8* pdf, int8* delta, int8* nonfinite) {
   Lanes3 wi_s, weight;
   int8 sample_ok = bsdf_lanes_sample(v->type, &v->b, v->wo_n, ub.x, ub.y, ub.z, &wi_s, &weight, pdf, delta);
   wi_s.z *= v->flip_sign;
@@ -62,11 +61,11 @@ inline int8 continue_lanes(const VertexLanes* v, RngBlockLanes ub, int8 depth, i
   int8 t_finite = lanes3_finite(t);
   float8 t_max = lanes3_max(t);
   int8 roulette = depth + 1 >= rr_depth;
-  *rr = select((float8)(1.0f), fmin(t_max, 0.95f), roulette);
+  float8 rr = fmin(t_max, 0.95f);  // the survival probability where roulette applies
   *nonfinite = sample_ok & ~t_finite;
-  t.x = select(t.x, t.x / *rr, roulette);
-  t.y = select(t.y, t.y / *rr, roulette);
-  t.z = select(t.z, t.z / *rr, roulette);
+  t.x = select(t.x, t.x / rr, roulette);
+  t.y = select(t.y, t.y / rr, roulette);
+  t.z = select(t.z, t.z / rr, roulette);
   *beta = t;
-  return sample_ok & t_finite & (t_max > 0.0f) & (~roulette | (ub.w < *rr));
+  return sample_ok & t_finite & (t_max > 0.0f) & (~roulette | (ub.w < rr));
 }

@@ -90,9 +90,9 @@ __attribute__((always_inline)) inline void pt_shade_lanes(
   vstore8(c_positive & ~lanes3_finite(c), 0, shadow_nonfinite);
 
   Lanes3 t = BETA, wi;
-  float8 pdf, rr;
+  float8 pdf;
   int8 delta, overflow;
-  int8 survives = continue_lanes(&v, ub, convert_int8(depth8), params.rr_depth, &t, &wi, &pdf, &delta, &rr, &overflow);
+  int8 survives = continue_lanes(&v, ub, convert_int8(depth8), params.rr_depth, &t, &wi, &pdf, &delta, &overflow);
   int8 on = vload8(0, active);
   LaneArray3 next_beta, next_wi;
   lanes3_store(t, &next_beta);

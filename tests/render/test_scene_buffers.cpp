@@ -80,8 +80,9 @@ TEST(SceneBuffers, KernelSeesEveryBufferAsUploaded) {
 }
 
 // The environment tables follow their shared layout: the row sums are those of the rows'
-// weights (the fourth channel of the map's texels, whose radiance stays), and the bilinear interpolant of the weights integrates to 1 over the grid (each
-// band between rows the mean of its two rows' sums).
+// weights (the fourth channel of the map's texels, whose radiance stays), and the bilinear
+// interpolant of the weights integrates to 1 over the grid (each band between rows the mean of
+// its two rows' sums).
 TEST(SceneBuffers, EnvironmentTablesFollowTheSharedLayout) {
   Scene scene = test::envmap_scene();
   SceneArrays a = scene_arrays(test::default_context(), scene);
