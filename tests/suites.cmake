@@ -1,0 +1,22 @@
+# Run by ctest as it starts (a TEST_INCLUDE_FILES script): one ctest test per GoogleTest suite
+# of GDR_TESTS_EXE, run as `gdr_tests --gtest_filter=Suite.*`. A test process spends about 0.45 s
+# before main() in the dynamic loader alone (Debian's OpenImageIO brings some 260 libraries), so
+# one process per suite instead of one per case saves that for all but the suites' first cases.
+# A failing suite's output names the failing cases; a suite passes with some cases skipped
+# (the shared-scene cases without ../shared/scenes), and its output says which.
+execute_process(COMMAND "${GDR_TESTS_EXE}" --gtest_list_tests OUTPUT_VARIABLE listing RESULT_VARIABLE status
+                ERROR_VARIABLE errors TIMEOUT 120)
+if(NOT status EQUAL 0)
+  add_test(gdr_tests_listing "${GDR_TESTS_EXE}" --gtest_list_tests)
+  message(WARNING "${GDR_TESTS_EXE} --gtest_list_tests failed (${status}): ${errors}")
+  return()
+endif()
+string(REPLACE "\n" ";" lines "${listing}")
+foreach(line IN LISTS lines)
+  # A suite line starts in the first column and ends in "." (a typed suite adds "  # TypeParam = ...").
+  if(line MATCHES "^([^ #][^ ]*)\\.( .*)?$")
+    set(suite "${CMAKE_MATCH_1}")
+    add_test("${suite}" "${GDR_TESTS_EXE}" "--gtest_filter=${suite}.*")
+    set_tests_properties("${suite}" PROPERTIES TIMEOUT 900)
+  endif()
+endforeach()
