@@ -15,24 +15,21 @@ namespace {
 
 using Samples = std::vector<std::pair<double, double>>;
 
-[[noreturn]] void bad(const XmlNode& node, const std::string& problem) {
-  throw InputError(node.file, node.line, problem);
-}
-
 // Mitsuba's rules for a sampled spectrum (Properties::Spectrum), and gdrender's for any value.
 Samples checked(const XmlNode& node, const std::string& what, const std::vector<double>& nm,
                 const std::vector<double>& values) {
   if (nm.size() != values.size()) {
-    bad(node, what + ": " + std::to_string(nm.size()) + " wavelengths but " + std::to_string(values.size()) +
-                  " values");
+    node_error(node, what + ": " + std::to_string(nm.size()) + " wavelengths but " + std::to_string(values.size()) +
+                         " values");
   }
-  if (nm.size() < 2) bad(node, what + ": a sampled spectrum needs at least two wavelengths (or one value alone)");
+  if (nm.size() < 2)
+    node_error(node, what + ": a sampled spectrum needs at least two wavelengths (or one value alone)");
   Samples s;
   for (size_t i = 0; i < nm.size(); ++i) {
-    if (!std::isfinite(nm[i])) bad(node, what + ": wavelengths must be finite");
-    if (!std::isfinite(values[i])) bad(node, what + ": values must be finite");
-    if (values[i] < 0) bad(node, what + ": values must not be negative");
-    if (i > 0 && !(nm[i] > nm[i - 1])) bad(node, what + ": wavelengths must increase");
+    if (!std::isfinite(nm[i])) node_error(node, what + ": wavelengths must be finite");
+    if (!std::isfinite(values[i])) node_error(node, what + ": values must be finite");
+    if (values[i] < 0) node_error(node, what + ": values must not be negative");
+    if (i > 0 && !(nm[i] > nm[i - 1])) node_error(node, what + ": wavelengths must increase");
     s.emplace_back(nm[i], values[i]);
   }
   return s;
@@ -44,7 +41,7 @@ Samples inline_samples(const XmlNode& node) {
   for (const std::string& tok : split_number_list(required_attr(node, "value"))) {
     size_t colon = tok.find(':');
     if (colon == std::string::npos) {
-      bad(node, describe_attr(node, "value") + ": '" + tok + "' is not wavelength:value");
+      node_error(node, describe_attr(node, "value") + ": '" + tok + "' is not wavelength:value");
     }
     nm.push_back(parse_number_text(node, "value", tok.substr(0, colon)));
     values.push_back(parse_number_text(node, "value", tok.substr(colon + 1)));
@@ -54,12 +51,12 @@ Samples inline_samples(const XmlNode& node) {
 
 std::vector<double> number_list(const Props& p, const std::string& name) {
   const XmlNode* n = p.find(name);
-  if (!n) bad(p.node(), "<spectrum type=\"" + p.type() + "\"> needs '" + name + "'");
+  if (!n) node_error(p.node(), "<spectrum type=\"" + p.type() + "\"> needs '" + name + "'");
   return parse_number_list(*n, "value");
 }
 
 double required_float(const Props& p, const std::string& name) {
-  if (!p.has(name)) bad(p.node(), "<spectrum type=\"" + p.type() + "\"> needs '" + name + "'");
+  if (!p.has(name)) node_error(p.node(), "<spectrum type=\"" + p.type() + "\"> needs '" + name + "'");
   return p.get_float(name, 0.0);
 }
 
@@ -71,7 +68,7 @@ std::string where(const XmlNode& node) {
 Samples regular_samples(const Props& p) {
   double lo = required_float(p, "wavelength_min"), hi = required_float(p, "wavelength_max");
   std::vector<double> values = number_list(p, "values");
-  if (values.size() < 2) bad(p.node(), where(p.node()) + ": a regular spectrum needs at least two values");
+  if (values.size() < 2) node_error(p.node(), where(p.node()) + ": a regular spectrum needs at least two values");
   std::vector<double> nm(values.size());
   double step = (hi - lo) / static_cast<double>(values.size() - 1);
   for (size_t i = 0; i < nm.size(); ++i) nm[i] = lo + step * static_cast<double>(i);
@@ -106,12 +103,13 @@ Rgb spectrum_plugin(const XmlNode& node, const XmlDocument& doc, SpectrumUse use
   if (type == "regular") return report_clamp(node, doc, use, spectrum_to_rgb(regular_samples(p), use));
   if (type == "blackbody") {
     double kelvin = required_float(p, "temperature");
-    if (!(kelvin > 0)) bad(node, where(node) + ": the temperature must be positive (kelvin)");
+    if (!(kelvin > 0)) node_error(node, where(node) + ": the temperature must be positive (kelvin)");
     double lo = p.get_float("wavelength_min", 360.0), hi = p.get_float("wavelength_max", 830.0);
     return report_clamp(node, doc, use, blackbody_spectrum_to_rgb(kelvin, lo, hi, use));
   }
-  bad(node, "<spectrum type=\"" + type + "\"> is not supported (gdrender reads the spectrum plugins irregular, "
-                                         "regular and blackbody, and value=\"...\")");
+  node_error(node, "<spectrum type=\"" + type +
+                       "\"> is not supported (gdrender reads the spectrum plugins irregular, "
+                       "regular and blackbody, and value=\"...\")");
 }
 
 // Mitsuba 0.x: <blackbody temperature="5000K" scale="1"/>.
@@ -119,7 +117,8 @@ Rgb legacy_blackbody(const XmlNode& node) {
   std::string temp = required_attr(node, "temperature");
   if (!temp.empty() && (temp.back() == 'K' || temp.back() == 'k')) temp.pop_back();
   double kelvin = parse_number_text(node, "temperature", temp);
-  if (!(kelvin > 0) || !std::isfinite(kelvin)) bad(node, describe_attr(node, "temperature") + ": must be positive");
+  if (!(kelvin > 0) || !std::isfinite(kelvin))
+    node_error(node, describe_attr(node, "temperature") + ": must be positive");
   double scale = node.attr("scale") ? parse_number(node, "scale") : 1.0;
   Rgb c = blackbody_to_rgb(kelvin);
   return {static_cast<float>(c.r * scale), static_cast<float>(c.g * scale), static_cast<float>(c.b * scale)};
@@ -130,11 +129,12 @@ Rgb legacy_blackbody(const XmlNode& node) {
 Rgb parse_spectrum(const XmlNode& node, const XmlDocument& doc, SpectrumUse use) {
   if (node.tag == "blackbody") return legacy_blackbody(node);
   if (node.attr("type")) return spectrum_plugin(node, doc, use);
-  if (node.attr("filename")) bad(node, "<spectrum filename=...> (spectral data files) is not supported");
+  if (node.attr("filename")) node_error(node, "<spectrum filename=...> (spectral data files) is not supported");
   const std::string& text = required_attr(node, "value");
   if (text.find(':') == std::string::npos) {
     std::vector<double> v = parse_number_list(node, "value");
-    if (v.size() != 1) bad(node, describe_attr(node, "value") + ": expected one value or wavelength:value pairs");
+    if (v.size() != 1)
+      node_error(node, describe_attr(node, "value") + ": expected one value or wavelength:value pairs");
     return uniform_spectrum_to_rgb(v[0], use);
   }
   return report_clamp(node, doc, use, spectrum_to_rgb(inline_samples(node), use));

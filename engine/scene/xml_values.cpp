@@ -11,15 +11,11 @@
 namespace gdr {
 namespace {
 
-[[noreturn]] void bad(const XmlNode& node, const std::string& problem) {
-  throw InputError(node.file, node.line, problem);
-}
-
 bool is_sep(char c) { return c == ',' || std::isspace(static_cast<unsigned char>(c)); }
 
 Vec3d attr_vec3(const XmlNode& node, const std::string& attr) {
   std::vector<double> v = parse_number_list(node, attr);
-  if (v.size() != 3) bad(node, describe_attr(node, attr) + ": expected 3 numbers");
+  if (v.size() != 3) node_error(node, describe_attr(node, attr) + ": expected 3 numbers");
   return {v[0], v[1], v[2]};
 }
 
@@ -28,7 +24,7 @@ Vec3d xyz_or_value(const XmlNode& node, double fallback, bool allow_single) {
   if (node.attr("value")) {
     std::vector<double> v = parse_number_list(node, "value");
     if (v.size() == 1 && allow_single) return {v[0], v[0], v[0]};
-    if (v.size() != 3) bad(node, describe_attr(node, "value") + ": expected 3 numbers");
+    if (v.size() != 3) node_error(node, describe_attr(node, "value") + ": expected 3 numbers");
     return {v[0], v[1], v[2]};
   }
   Vec3d r{fallback, fallback, fallback};
@@ -44,7 +40,7 @@ Mat4d transform_op(const XmlNode& op) {
   if (t == "scale") return Mat4d::scale(xyz_or_value(op, 1.0, true));
   if (t == "rotate") {
     Vec3d axis = xyz_or_value(op, 0.0, false);
-    if (length(axis) == 0) bad(op, "<rotate> needs a non-zero axis");
+    if (length(axis) == 0) node_error(op, "<rotate> needs a non-zero axis");
     return Mat4d::rotate(axis, parse_number(op, "angle"));
   }
   if (t == "matrix") {
@@ -55,23 +51,25 @@ Mat4d transform_op(const XmlNode& op) {
     } else if (v.size() == 9) {
       for (int i = 0; i < 9; ++i) m.m[i / 3][i % 3] = v[i];
     } else {
-      bad(op, describe_attr(op, "value") + ": expected 16 (or 9) numbers, got " + std::to_string(v.size()));
+      node_error(op, describe_attr(op, "value") + ": expected 16 (or 9) numbers, got " + std::to_string(v.size()));
     }
     if (m.m[3][0] != 0 || m.m[3][1] != 0 || m.m[3][2] != 0 || m.m[3][3] != 1) {
-      bad(op, "<matrix>: projective matrices are not supported (last row must be 0 0 0 1)");
+      node_error(op, "<matrix>: projective matrices are not supported (last row must be 0 0 0 1)");
     }
     return m;
   }
   if (t == "lookat") {
     Vec3d origin = attr_vec3(op, "origin"), target = attr_vec3(op, "target");
     Vec3d up = op.attr("up") ? attr_vec3(op, "up") : Vec3d{0, 1, 0};
-    if (length(target - origin) == 0) bad(op, "<lookat>: origin and target coincide");
+    if (length(target - origin) == 0) node_error(op, "<lookat>: origin and target coincide");
     return Mat4d::look_at(origin, target, up);
   }
-  bad(op, "unknown transform operation <" + t + ">");
+  node_error(op, "unknown transform operation <" + t + ">");
 }
 
 }  // namespace
+
+void node_error(const XmlNode& node, const std::string& problem) { throw InputError(node.file, node.line, problem); }
 
 std::string describe_attr(const XmlNode& node, const std::string& attr) {
   std::string s = "attribute '" + attr + "' of <" + node.tag;
@@ -81,7 +79,7 @@ std::string describe_attr(const XmlNode& node, const std::string& attr) {
 
 const std::string& required_attr(const XmlNode& node, const std::string& attr) {
   const std::string* v = node.attr(attr);
-  if (!v) bad(node, "<" + node.tag + "> needs a '" + attr + "' attribute");
+  if (!v) node_error(node, "<" + node.tag + "> needs a '" + attr + "' attribute");
   return *v;
 }
 
@@ -92,7 +90,7 @@ double parse_number_text(const XmlNode& node, const std::string& attr, const std
   double v = std::strtod(begin, &end);
   while (end && *end && std::isspace(static_cast<unsigned char>(*end))) ++end;
   if (end == begin || (end && *end) || text.empty()) {
-    bad(node, describe_attr(node, attr) + ": '" + text + "' is not a number");
+    node_error(node, describe_attr(node, attr) + ": '" + text + "' is not a number");
   }
   return v;
 }
@@ -131,25 +129,26 @@ Rgb parse_color(const XmlNode& node) {
     std::string text = required_attr(node, "value");
     Rgb c;
     if (t == "srgb" && !text.empty() && text[0] == '#') {
-      if (text.size() != 7) bad(node, describe_attr(node, "value") + ": expected #rrggbb");
+      if (text.size() != 7) node_error(node, describe_attr(node, "value") + ": expected #rrggbb");
       unsigned long v = std::strtoul(text.c_str() + 1, nullptr, 16);
       c = Rgb(((v >> 16) & 255) / 255.0f, ((v >> 8) & 255) / 255.0f, (v & 255) / 255.0f);
     } else {
       std::vector<double> v = parse_number_list(node, "value");
       if (v.size() == 1) c = Rgb(static_cast<float>(v[0]));
       else if (v.size() == 3) c = Rgb(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-      else bad(node, describe_attr(node, "value") + ": expected 1 or 3 numbers, got " + std::to_string(v.size()));
+      else
+        node_error(node, describe_attr(node, "value") + ": expected 1 or 3 numbers, got " + std::to_string(v.size()));
     }
     if (t == "srgb") c = Rgb(srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b));
     return c;
   }
-  bad(node, "<" + t + "> is not a colour");
+  node_error(node, "<" + t + "> is not a colour");
 }
 
 Mat4d parse_transform(const XmlNode& node) {
   Mat4d m;
   for (const auto& op : node.children) m = transform_op(*op) * m;
-  if (!m.finite()) bad(node, "<transform> is not finite");
+  if (!m.finite()) node_error(node, "<transform> is not finite");
   return m;
 }
 
@@ -167,18 +166,20 @@ const XmlNode* Props::find(const std::string& name) const {
 double Props::get_float(const std::string& name, double fallback) const {
   const XmlNode* n = find(name);
   if (!n) return fallback;
-  if (n->tag != "float" && n->tag != "integer") bad(*n, "'" + name + "' must be a <float>, not <" + n->tag + ">");
+  if (n->tag != "float" && n->tag != "integer")
+    node_error(*n, "'" + name + "' must be a <float>, not <" + n->tag + ">");
   double v = parse_number(*n, "value");
-  if (!std::isfinite(v)) bad(*n, describe_attr(*n, "value") + " is not finite");
+  if (!std::isfinite(v)) node_error(*n, describe_attr(*n, "value") + " is not finite");
   return v;
 }
 
 int Props::get_int(const std::string& name, int fallback) const {
   const XmlNode* n = find(name);
   if (!n) return fallback;
-  if (n->tag != "integer" && n->tag != "float") bad(*n, "'" + name + "' must be an <integer>, not <" + n->tag + ">");
+  if (n->tag != "integer" && n->tag != "float")
+    node_error(*n, "'" + name + "' must be an <integer>, not <" + n->tag + ">");
   double v = parse_number(*n, "value");
-  if (v != std::floor(v) || std::fabs(v) > 2e9) bad(*n, describe_attr(*n, "value") + ": not an integer");
+  if (v != std::floor(v) || std::fabs(v) > 2e9) node_error(*n, describe_attr(*n, "value") + ": not an integer");
   return static_cast<int>(v);
 }
 
@@ -189,7 +190,7 @@ bool Props::get_bool(const std::string& name, bool fallback) const {
   for (char& c : v) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (v == "true" || v == "1") return true;
   if (v == "false" || v == "0") return false;
-  bad(*n, describe_attr(*n, "value") + ": '" + v + "' is not true or false");
+  node_error(*n, describe_attr(*n, "value") + ": '" + v + "' is not true or false");
 }
 
 std::string Props::get_string(const std::string& name, const std::string& fallback) const {
@@ -205,7 +206,7 @@ Vec3d Props::get_vec3(const std::string& name, Vec3d fallback) const {
 Mat4d Props::get_transform(const std::string& name) const {
   const XmlNode* n = find(name);
   if (!n) return Mat4d{};
-  if (n->tag != "transform") bad(*n, "'" + name + "' must be a <transform>");
+  if (n->tag != "transform") node_error(*n, "'" + name + "' must be a <transform>");
   Mat4d m = parse_transform(*n);
   for (const auto& op : n->children) {
     if (op->tag != "lookat") continue;
@@ -225,8 +226,8 @@ Rgb Props::get_color(const std::string& name, Rgb fallback, SpectrumUse use) con
   if (!n || n->tag == "texture") return fallback;
   Rgb c = n->tag == "spectrum" || n->tag == "blackbody" ? parse_spectrum(*n, doc_, use) : parse_color(*n);
   for (float v : {c.r, c.g, c.b}) {
-    if (!std::isfinite(v)) bad(*n, "'" + name + "' is not finite");
-    if (v < 0) bad(*n, "'" + name + "' must not be negative");
+    if (!std::isfinite(v)) node_error(*n, "'" + name + "' is not finite");
+    if (v < 0) node_error(*n, "'" + name + "' must not be negative");
   }
   return c;
 }

@@ -12,6 +12,8 @@
 
 namespace gdr {
 
+// Throws InputError naming the node's file and line.
+[[noreturn]] void node_error(const XmlNode& node, const std::string& problem);
 // "attribute 'value' of <spectrum name="reflectance">" for messages.
 std::string describe_attr(const XmlNode& node, const std::string& attr);
 // The attribute's value; InputError naming file and line when it is missing.
