@@ -2,8 +2,9 @@
 # of GDR_TESTS_EXE, run as `gdr_tests --gtest_filter=Suite.*`. A test process spends about 0.45 s
 # before main() in the dynamic loader alone (Debian's OpenImageIO brings some 260 libraries), so
 # one process per suite instead of one per case saves that for all but the suites' first cases.
-# A failing suite's output names the failing cases; a suite passes with some cases skipped
-# (the shared-scene cases without ../shared/scenes), and its output says which.
+# A failing suite's output names the failing cases. A suite with some cases skipped (the
+# shared-scene cases without ../shared/scenes) passes; `ctest -V` shows which were skipped.
+# Then the suites' costs (test_costs.cmake), once there are suites to give them to.
 execute_process(COMMAND "${GDR_TESTS_EXE}" --gtest_list_tests OUTPUT_VARIABLE listing RESULT_VARIABLE status
                 ERROR_VARIABLE errors TIMEOUT 120)
 if(NOT status EQUAL 0)
@@ -20,3 +21,4 @@ foreach(line IN LISTS lines)
     set_tests_properties("${suite}" PROPERTIES TIMEOUT 900)
   endif()
 endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/test_costs.cmake")

@@ -11,10 +11,11 @@
 // against pt_route, an environment map, two-sided diffuse beside other types) the ray counts are
 // equal and the images' relative L1 difference below 1e-6 (measured 2.8e-8 and 1.0e-8). Behind
 // the glass box's dielectric a refraction can turn that difference into another path: counts
-// within 1e-3 (measured 6e-5), images within 1e-4 (measured 5.5e-6). A two-sided diffuse rectangle seen from behind, lit by a
-// point light and a constant environment (a delta light's unweighted samples, the back side's
-// flip): equal counts, images within 1e-6. The same for the smooth plastic queue (its lanes:
-// pt_shade_lanes_plastic). Deterministic (seed 9, 4 spp, 64 px films).
+// within 1e-3 (measured 6e-5), images within 1e-4 (measured 5.5e-6). A two-sided diffuse
+// rectangle seen from behind, lit by a point light and a constant environment (a delta light's
+// unweighted samples, the back side's flip): equal counts, images within 1e-6. The same for the
+// smooth plastic queue (its lanes: pt_shade_lanes_plastic). Deterministic (seed 9, 4 spp, 64 px
+// films).
 #include <gtest/gtest.h>
 
 #include <cmath>
