@@ -115,6 +115,10 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
   app.add_option("-D", defines, "Scene parameter: -D name=value (overrides <default name=...>)");
   app.add_option("--device", o.device,
                  "OpenCL device: index, cpu, gpu, or part of its name (default: $GDR_DEVICE, else first GPU, else CPU)");
+  app.add_option("--kernels", o.kernels,
+                 "Kernel builds: scene (only the BSDF, light and texture code the scene uses) or all (every type: "
+                 "one build serves every scene; default: $GDR_KERNELS, else scene)")
+      ->check(CLI::IsMember({"scene", "all"}));
   app.add_option("--stats", o.stats_path, "Write timers and counters to this JSON file");
   app.add_option("--threads", o.threads, "Host and CPU-device threads (default and maximum: the usable CPUs)")
       ->check(kFinitePositive);

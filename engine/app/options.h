@@ -25,6 +25,7 @@ struct Options {
   uint32_t seed = 0;
   std::map<std::string, std::string> defines;  // -D name=value: the scene's $name defaults
   std::string device;
+  std::string kernels;  // --kernels scene|all; empty: $GDR_KERNELS, else scene
   std::string stats_path;
   int threads = 0;
   bool strict = false;

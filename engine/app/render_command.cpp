@@ -160,6 +160,7 @@ int render_command(const Options& o) {
     // Processes sharing a node take its devices in turn (--device or GDR_DEVICE choose for all).
     device = select_device(o.device, cluster::local_rank());
     ctx = std::make_unique<Context>(device, &stats);
+    if (!o.kernels.empty()) ctx->set_scene_kernels(o.kernels == "scene");
     log::info("device: ", ctx->device().name, " (", ctx->device().platform_name, ")");
     if (cluster::distributed()) log::info("ranks: ", cluster::size(), " (rank r traces passes r, r + ", cluster::size(), ", ...)");
     log::info("scene: ", o.scene, ": ", scene.triangles.size(), " triangles, ", scene.lights.size(), " lights, ",

@@ -1,5 +1,6 @@
 #include "device/context.h"
 
+#include <cstdlib>
 #include <limits>
 
 #include "device/kernel_cache.h"
@@ -10,8 +11,21 @@
 #include "util/log.h"
 
 namespace gdr {
+namespace {
 
-Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stats_(stats) {
+// $GDR_KERNELS: scene (the default) or all.
+bool scene_kernels_by_default() {
+  const char* env = std::getenv("GDR_KERNELS");
+  const std::string mode = env ? env : "";
+  if (mode.empty() || mode == "scene") return true;
+  if (mode == "all") return false;
+  throw Error("GDR_KERNELS=" + mode + ": expected scene (build only the code the scene uses) or all (every type)");
+}
+
+}  // namespace
+
+Context::Context(const DeviceInfo& device, Stats* stats)
+    : device_(device), stats_(stats), scene_kernels_(scene_kernels_by_default()) {
   zero_copy_ = is_cpu() || device_.host_unified;
   configure_runtime(0);
   cl_int err = CL_SUCCESS;
@@ -33,6 +47,12 @@ Context::Context(const DeviceInfo& device, Stats* stats) : device_(device), stat
     stats_->set("device/platform", device_.platform_name);
     stats_->set("device/type", device_.type);
   }
+  set_scene_kernels(scene_kernels_);
+}
+
+void Context::set_scene_kernels(bool on) {
+  scene_kernels_ = on;
+  if (stats_) stats_->set("device/kernels", on ? "scene" : "all");
 }
 
 Context::~Context() {

@@ -45,6 +45,13 @@ class Context {
   bool zero_copy() const { return zero_copy_; }
   void set_zero_copy(bool on) { zero_copy_ = on; }
 
+  // What program builds compile: only the BSDF, light and texture code of the scene at hand
+  // (KernelFactory's scene defines; the default), or every type of each, one build of a program
+  // that serves every scene. A cold cache then builds each program once, not once per scene;
+  // the kernels carry the code of every type. $GDR_KERNELS (scene or all) sets the default.
+  bool scene_kernels() const { return scene_kernels_; }
+  void set_scene_kernels(bool on);
+
   // Builds kernels/<root> with `defines`; the same (root, defines) is built once per Context.
   // Throws DeviceError with the compiler log (file:line of the kernel source) on failure.
   std::shared_ptr<Program> program(const std::string& root, const Defines& defines = {});
@@ -72,6 +79,7 @@ class Context {
   cl_command_queue queues_[kQueues] = {};
   int current_ = 0;
   bool zero_copy_ = false;
+  bool scene_kernels_ = true;
   std::map<std::string, std::shared_ptr<Program>> programs_;
   std::map<std::string, std::shared_ptr<void>> kept_;
   friend class Kernel;

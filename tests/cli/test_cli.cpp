@@ -144,6 +144,24 @@ TEST(Cli, BadResolutionIsRejected) {
   }
 }
 
+// --kernels chooses the kernel builds (the stats say which); $GDR_KERNELS gives the default, and
+// a value either does not know stops the render before it writes anything.
+TEST(Cli, KernelBuildsAreChosen) {
+  TempDir dir;
+  for (const std::string mode : {"scene", "all"}) {
+    CliResult r =
+        run_gdrender(kCornell + " --kernels " + mode + " -D res=8 --spp 1 --quiet -o out.exr --stats s.json", dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    std::ifstream in(dir.file("s.json"));
+    EXPECT_EQ(nlohmann::json::parse(in)["device"]["kernels"], mode);
+  }
+  TempDir bad;
+  expect_failure(run_gdrender(kCornell + " --kernels some -D res=8 --spp 1 -o out.exr", bad), "--kernels", bad);
+  expect_failure(run_shell("cd '" + bad.path().string() + "' && GDR_KERNELS=some timeout 60 '" + gdrender_exe() + "' " +
+                           kCornell + " -D res=8 --spp 1 -o out.exr 2>&1"),
+                 "GDR_KERNELS=some", bad);
+}
+
 // A parameter the scene does not have is not silently ignored: a warning names it and the
 // scene's parameters; with --strict it is an error.
 TEST(Cli, UnknownDefineIsReported) {

@@ -32,7 +32,9 @@ std::string shade_kernel(int t, int lanes) {
 void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32);
   Stats stats;
-  test::SceneOnCountingDevice on_device(scene, &stats);
+  Context context(select_device(""), &stats);
+  context.set_scene_kernels(true);  // what this suite checks: the scene's own build
+  test::SceneOnDevice on_device(scene, &stats, context);
   RenderSettings s;
   s.spp = 2;
   s.seed = 9;
@@ -41,7 +43,7 @@ void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   pt.lanes = lanes;
   PathTracer(on_device.inputs(), pt).render(s);
 
-  KernelFactory kernels(on_device.context, scene);
+  KernelFactory kernels(context, scene);
   int types = 0;
   uint64_t shaded = 0;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {

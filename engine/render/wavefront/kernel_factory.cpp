@@ -11,7 +11,7 @@ Defines scene_kernel_defines(const Scene& scene) {
 }
 
 KernelFactory::KernelFactory(Context& ctx, const Scene& scene, const Defines& integrator_defines)
-    : ctx_(ctx), defines_(scene_kernel_defines(scene)) {
+    : ctx_(ctx), defines_(ctx.scene_kernels() ? scene_kernel_defines(scene) : Defines{}) {
   for (const auto& [name, value] : integrator_defines) defines_[name] = value;
 }
 

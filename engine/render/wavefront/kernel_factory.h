@@ -1,6 +1,7 @@
 // Builds an integrator's kernels for a scene. It owns every -D define a kernel build gets: the
-// scene's (only the BSDF, light and texture code the scene uses is compiled: SceneFeatures) and
-// the integrator's own. Programs are built once per (program, defines) by the Context.
+// scene's (only the BSDF, light and texture code the scene uses is compiled: SceneFeatures; none
+// where the Context builds every type, Context::scene_kernels) and the integrator's own.
+// Programs are built once per (program, defines) by the Context.
 #pragma once
 #include <string>
 
