@@ -18,10 +18,6 @@ namespace {
 
 constexpr int kRuns = 16;
 
-Scene project_scene(const std::string& name, int width) {
-  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name), width);
-}
-
 BidirSettings bdpt_with(const std::map<std::string, std::string>& params) {
   return bdpt_settings(IntegratorParams(params));
 }
@@ -37,18 +33,18 @@ void expect_agrees_with_pt(const Scene& scene, const std::string& name, const Bi
 }
 
 TEST(Bdpt, CornellBoxAgreesWithPt) {
-  expect_agrees_with_pt(project_scene("cornell-box.xml", 24), "cornell-box.xml", bdpt_with({}), 8, 6);
+  expect_agrees_with_pt(test::project_scene("cornell-box.xml", 24), "cornell-box.xml", bdpt_with({}), 8, 6);
 }
 
 TEST(Bdpt, BalanceHeuristicAgreesWithPt) {
-  expect_agrees_with_pt(project_scene("cornell-box.xml", 24), "cornell-box.xml (balance)",
+  expect_agrees_with_pt(test::project_scene("cornell-box.xml", 24), "cornell-box.xml (balance)",
                         bdpt_with({{"mis", "balance"}}), 8, 6);
 }
 
 // The plates at least 0.2 rough, as for lt: the smoother ones make pt's light-sampled runs too
 // heavy-tailed for a t-test over 16 runs (tests/pt/test_strategies.cpp).
 TEST(Bdpt, GlossyPlatesAgreeWithPt) {
-  Scene scene = project_scene("glossy-plates.xml", 32);
+  Scene scene = test::project_scene("glossy-plates.xml", 32);
   for (GdrMaterial& m : scene.materials) {
     if (m.type == BSDF_ROUGH_PLASTIC) m.alpha_u = m.alpha_v = std::max(m.alpha_u, 0.2f);
   }
@@ -58,8 +54,8 @@ TEST(Bdpt, GlossyPlatesAgreeWithPt) {
 // A glass sphere and a mirror: delta vertices that no connection can end at, caustics that only
 // the light subpaths reach through them.
 TEST(Bdpt, CausticsBoxAgreesWithPt) {
-  expect_agrees_with_pt(project_scene("cornell-box-caustics.xml", 24), "cornell-box-caustics.xml", bdpt_with({}), 8,
-                        6);
+  expect_agrees_with_pt(test::project_scene("cornell-box-caustics.xml", 24), "cornell-box-caustics.xml", bdpt_with({}),
+                        8, 6);
 }
 
 // Connections evaluate the light vertex in importance transport, with the shading-normal
@@ -72,7 +68,7 @@ TEST(Bdpt, ShadingNormalsAgreeWithPt) {
 // every strategy can sample every path): pt's image at max_depth k minus its image at k - 1 with
 // the same seed is exactly pt's estimate of those paths.
 TEST(Bdpt, EachStrategyAloneGivesThePathsOfItsLength) {
-  Scene scene = project_scene("cornell-box.xml", 24);
+  Scene scene = test::project_scene("cornell-box.xml", 24);
   test::SceneOnDevice on_device(scene);
   const int w = scene.camera.width, h = scene.camera.height, k = 3;
   PathTracer pt(on_device.inputs(), PtSettings{});

@@ -18,7 +18,7 @@ namespace {
 class BidirTechnique : public ::testing::TestWithParam<int> {
  protected:
   BidirSettings settings() const { return bidir_settings(GetParam(), IntegratorParams{}); }
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml"), 32);
+  Scene scene = test::project_scene("cornell-box.xml", 32);
 };
 
 std::vector<float> render(Integrator& integrator, int spp, uint32_t seed, int max_depth) {

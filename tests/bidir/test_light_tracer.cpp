@@ -28,7 +28,7 @@ void expect_agrees_with_pt(const Scene& scene, const std::string& name, int lt_s
 }
 
 TEST(LightTracer, CornellBoxAgreesWithPt) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml"), 24);
+  Scene scene = test::project_scene("cornell-box.xml", 24);
   expect_agrees_with_pt(scene, "cornell-box.xml", 16, 16, 6);
 }
 

@@ -197,7 +197,7 @@ TEST(Gpm, PrimalAgreesWithPm) {
 // photon gets its walk); those of lights at infinity (the environment scene's sky and sun, above
 // diffuse and rough surfaces only) are all shifted.
 void expect_counted(const std::string& file, bool delta_parents, const IntegratorParams& p = {}) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 24);
+  Scene scene = test::project_scene(file, 24);
   Stats stats;
   Context ctx(select_device(""), &stats);
   test::SceneOnDevice on_device(scene, &stats, ctx);

@@ -125,7 +125,7 @@ TEST(Gvcm, MergesConnectionsAndFailuresAreCounted) {
                         Case{"cornell-box-caustics.xml", "manifold"}}) {
     const std::string file = c.file;
     const bool delta_parents = file == "cornell-box-caustics.xml", walks = std::string(c.shift) == "manifold";
-    Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 24);
+    Scene scene = test::project_scene(file, 24);
     Stats stats;
     Context ctx(select_device(""), &stats);
     test::SceneOnDevice on_device(scene, &stats, ctx);

@@ -212,7 +212,7 @@ void expect_sums_unshifted(const Scene& scene, const std::string& what, std::vec
 // (photon_chain_sums, kernels/tests/photon_shift_test.cl), against those the light subpath carried
 // to the photon: both chain ends (a rough vertex and the light) occur, and dvcm is 0 on both sides.
 TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 32);
+  Scene scene = test::project_scene("cornell-box-caustics.xml", 32);
   LightBatch batch(scene, BIDIR_VCM, true);
   Defines defines = manifold_defines(batch.in.context.device(), ManifoldSettings{});
   defines["GDR_GVCM"] = "1";
@@ -262,7 +262,7 @@ TEST(PhotonShift, ChainSumsOfAnUnmovedPhotonAreItsOwn) {
 // walk's g_walk (seen from the photon) turned around by the chain's end cosines instead gives the
 // density median 1.1e-2, p90 6.2e-2 (h 1e-3 of the radius).
 TEST(PhotonChainShift, DensityMatchesFiniteDifferencesAndShiftsBack) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 32);
+  Scene scene = test::project_scene("cornell-box-caustics.xml", 32);
   LightBatch batch(scene, BIDIR_VCM, true);
   const DeviceInfo& device = batch.in.context.device();
   ManifoldSettings ms;
@@ -371,18 +371,14 @@ void expect_light_tracing_round_trip(const Scene& scene, const std::string& what
 }
 
 TEST(PhotonShift, SumsOfAnUnshiftedPhotonAreItsOwn) {
-  auto project = [](const char* file) {
-    return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 24);
-  };
+  auto project = [](const char* file) { return test::project_scene(file, 24); };
   expect_sums_unshifted(project("cornell-box.xml"), "cornell-box", {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
   expect_sums_unshifted(project("environment.xml"), "environment", {GPM_PARENT_INFINITE});
   expect_sums_unshifted(test::point_light_beside_zero_area_emitter(), "point light", {GPM_PARENT_LIGHT});
 }
 
 TEST(LightTracingShift, RoundTripInvertsDensitiesAndValues) {
-  auto project = [](const char* file, int size) {
-    return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), size);
-  };
+  auto project = [](const char* file, int size) { return test::project_scene(file, size); };
   expect_light_tracing_round_trip(project("cornell-box.xml", 24), "cornell-box",
                                   {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
   // Few of the environment's light subpaths land where the camera sees: a larger film.

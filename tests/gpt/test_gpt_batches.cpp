@@ -21,7 +21,7 @@ namespace gdr {
 namespace {
 
 void expect_same_in_two_batches(const std::string& file) {
-  const Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 160);
+  const Scene scene = test::project_scene(file, 160);
   RenderSettings s;
   s.spp = 2;
   s.seed = 11;

@@ -104,7 +104,7 @@ TEST(GptDirectSamples, GvcmDirectLayerUnbiasedAndLessNoisy) {
 // After the first pass only the pixels near the light's edge take extra samples: the passes after
 // it list a small share of the image (the light covers about 1% of the caustics box's image).
 TEST(GptDirectSamples, AfterTheFirstPassOnlyNearEdges) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 64);
+  Scene scene = test::project_scene("cornell-box-caustics.xml", 64);
   Stats stats;
   test::SceneOnCountingDevice on_device(scene, &stats);
   IntegratorParams params;

@@ -37,7 +37,7 @@ void render(const Scene& scene, bool bidirectional, bool routed, Rendered& out) 
 }
 
 void expect_same_images_routed(const std::string& file, bool bidirectional, int expected_types) {
-  const Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 48);
+  const Scene scene = test::project_scene(file, 48);
   Rendered routed, unrouted;
   render(scene, bidirectional, true, routed);
   render(scene, bidirectional, false, unrouted);

@@ -21,10 +21,6 @@ namespace {
 
 constexpr int kRuns = 16;
 
-Scene project_scene(const std::string& name, int width) {
-  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name), width);
-}
-
 // 2048 chains: a step is about 3.5 mutations a pixel at 24 x 24.
 IntegratorParams small_gmlt(std::map<std::string, std::string> extra = {}) {
   extra.emplace("chains", "2048");  // unless `extra` names another count
@@ -86,15 +82,16 @@ void expect_gradients_converge(const Scene& scene, const std::string& name, int 
 }
 
 TEST(Gmlt, CornellBoxGradientsConvergeToPtDifferences) {
-  expect_gradients_converge(project_scene("cornell-box.xml", 24), "cornell-box.xml", 4096, 2048, 4);
+  expect_gradients_converge(test::project_scene("cornell-box.xml", 24), "cornell-box.xml", 4096, 2048, 4);
 }
 
 TEST(Gmlt, CausticsBoxGradientsConvergeThroughManifoldWalks) {
-  expect_gradients_converge(project_scene("cornell-box-caustics.xml", 24), "cornell-box-caustics.xml", 4096, 2048, 2);
+  expect_gradients_converge(test::project_scene("cornell-box-caustics.xml", 24), "cornell-box-caustics.xml", 4096, 2048,
+                            2);
 }
 
 TEST(Gmlt, L2ReconstructionAgreesWithPt) {
-  Scene scene = project_scene("cornell-box.xml", 24);
+  Scene scene = test::project_scene("cornell-box.xml", 24);
   test::SceneOnDevice on_device(scene);
   IntegratorParams params = small_gmlt({{"recon", "l2"}});
   GradientMetropolis gmlt(on_device.inputs(), gmlt_settings(params), params);
@@ -106,7 +103,7 @@ TEST(Gmlt, L2ReconstructionAgreesWithPt) {
 
 // Offsets past the image's edge fail and are counted; the chains' steps are counted by kind.
 TEST(Gmlt, StatsCountFailedShiftsAndSteps) {
-  Scene scene = project_scene("cornell-box.xml", 16);
+  Scene scene = test::project_scene("cornell-box.xml", 16);
   Stats stats;
   Context context(select_device(""), &stats);
   test::SceneOnDevice on_device(scene, &stats, context);

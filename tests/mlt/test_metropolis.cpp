@@ -20,10 +20,6 @@ namespace {
 
 constexpr int kRuns = 16;
 
-Scene project_scene(const std::string& name, int width) {
-  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name), width);
-}
-
 // A short render's settings for a film of a few hundred pixels: 2048 chains (one step of all of
 // them is about 3.5 mutations a pixel at 24 x 24), a bootstrap of 2^16 samples.
 MltIntegratorSettings small_mlt() {
@@ -46,13 +42,13 @@ void expect_agrees_with_pt(const Scene& scene, const std::string& name, int pass
 }
 
 TEST(Mlt, CornellBoxAgreesWithPt) {
-  expect_agrees_with_pt(project_scene("cornell-box.xml", 24), "cornell-box.xml", 32, 6);
+  expect_agrees_with_pt(test::project_scene("cornell-box.xml", 24), "cornell-box.xml", 32, 6);
 }
 
 // The plates at least 0.2 rough, as for bdpt (tests/bidir/test_bdpt.cpp): pt's light-sampled
 // runs on the smoother ones are too heavy-tailed for a t-test over 16 runs.
 TEST(Mlt, GlossyPlatesAgreeWithPt) {
-  Scene scene = project_scene("glossy-plates.xml", 32);
+  Scene scene = test::project_scene("glossy-plates.xml", 32);
   for (GdrMaterial& m : scene.materials) {
     if (m.type == BSDF_ROUGH_PLASTIC) m.alpha_u = m.alpha_v = std::max(m.alpha_u, 0.2f);
   }
@@ -60,7 +56,7 @@ TEST(Mlt, GlossyPlatesAgreeWithPt) {
 }
 
 TEST(Mlt, NormalizationIsTheImagesLuminanceSum) {
-  Scene scene = project_scene("cornell-box.xml", 24);
+  Scene scene = test::project_scene("cornell-box.xml", 24);
   test::SceneOnDevice on_device(scene);
   Metropolis mlt(on_device.inputs(), small_mlt());
   PathTracer pt(on_device.inputs(), PtSettings{});
@@ -81,7 +77,7 @@ TEST(Mlt, NormalizationIsTheImagesLuminanceSum) {
 }
 
 TEST(Mlt, SameSeedSameImage) {
-  Scene scene = project_scene("cornell-box.xml", 16);
+  Scene scene = test::project_scene("cornell-box.xml", 16);
   test::SceneOnDevice on_device(scene);
   Metropolis mlt(on_device.inputs(), small_mlt());
   RenderSettings s;
@@ -96,7 +92,7 @@ TEST(Mlt, SameSeedSameImage) {
 // Every step of every chain is a small or a large step, counted; the bootstrap's samples and the
 // chains are reported; nothing non-finite reached the film.
 TEST(Mlt, StatsCountTheSteps) {
-  Scene scene = project_scene("cornell-box.xml", 16);
+  Scene scene = test::project_scene("cornell-box.xml", 16);
   Stats stats;
   Context context(select_device(""), &stats);
   test::SceneOnDevice on_device(scene, &stats, context);
@@ -125,7 +121,7 @@ TEST(Mlt, StatsCountTheSteps) {
 // seeds 2 and 3, against 14 to 37 at seeds 1, 4, 5, 6; fixed seeds, so the check is
 // deterministic); with start_cap 16 none starts more than a quarter of that (9 at both).
 TEST(Mlt, StartCapSpreadsTheChainsOfALoneBrightSample) {
-  Scene scene = project_scene("glass-box.xml", 32);
+  Scene scene = test::project_scene("glass-box.xml", 32);
   for (uint32_t seed : {2u, 3u}) {
     size_t most[2];
     for (int capped = 0; capped < 2; ++capped) {

@@ -18,7 +18,7 @@ namespace gdr {
 namespace {
 
 TEST(PtBatches, TwoBatchesRenderTheImageOfOne) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/environment.xml"), 256);
+  Scene scene = test::project_scene("environment.xml", 256);
   RenderSettings s;
   s.spp = 2;
   s.seed = 9;

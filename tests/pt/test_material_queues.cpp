@@ -30,7 +30,7 @@ std::string shade_kernel(int t, int lanes) {
 }
 
 void expect_queues_of(const std::string& file, int expected_types, int lanes) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32);
+  Scene scene = test::project_scene(file, 32);
   Stats stats;
   Context context(select_device(""), &stats);
   context.set_scene_kernels(true);  // what this suite checks: the scene's own build

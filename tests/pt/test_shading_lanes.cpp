@@ -88,7 +88,7 @@ void expect_lanes_match(const Scene& scene, const std::string& file, double ray_
 }
 
 void expect_project_scene_matches(const std::string& file, double ray_tolerance, double image_tolerance) {
-  Scene scene = test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 64);
+  Scene scene = test::project_scene(file, 64);
   expect_lanes_match(scene, file, ray_tolerance, image_tolerance);
 }
 

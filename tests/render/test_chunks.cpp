@@ -23,9 +23,7 @@ namespace {
 
 constexpr size_t kChunk = 5000;
 
-Scene chunked_scene() {
-  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml"), 160);
-}
+Scene chunked_scene() { return test::project_scene("cornell-box-caustics.xml", 160); }
 
 RenderSettings settings() {
   RenderSettings s;

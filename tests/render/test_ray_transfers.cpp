@@ -52,14 +52,12 @@ void expect_same_with_copies(const Scene& scene, const std::string& integrator,
   }
 }
 
-Scene project_scene(const std::string& file, int width) {
-  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), width);
+TEST(RayTransfers, PtInBatchesRendersTheSame) {
+  expect_same_with_copies(test::project_scene("environment.xml", 256), "pt");
 }
 
-TEST(RayTransfers, PtInBatchesRendersTheSame) { expect_same_with_copies(project_scene("environment.xml", 256), "pt"); }
-
 TEST(RayTransfers, GradientIntegratorsRenderTheSame) {
-  const Scene caustics = project_scene("cornell-box-caustics.xml", 32);
+  const Scene caustics = test::project_scene("cornell-box-caustics.xml", 32);
   expect_same_with_copies(caustics, "gpt", {{"shift", "manifold"}});
   expect_same_with_copies(caustics, "gvcm");
 }

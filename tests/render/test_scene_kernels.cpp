@@ -22,11 +22,7 @@
 namespace gdr {
 namespace {
 
-Scene project_scene(const std::string& file) {
-  return test::small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32);
-}
-
-RenderSettings settings() {
+RenderSettings short_render() {
   RenderSettings s;
   s.spp = 2;
   s.seed = 9;
@@ -59,10 +55,10 @@ void expect_builds_differ(const Scene& scene, OnBuild& own, OnBuild& all, const 
 }
 
 void expect_pt_builds_agree(const std::string& file) {
-  const Scene scene = project_scene(file);
+  const Scene scene = test::project_scene(file, 32);
   OnBuild own(scene, true), all(scene, false);
-  const std::vector<float> a = PathTracer(own.inputs(), {}).render(settings()).image.rgb_layer("");
-  const std::vector<float> b = PathTracer(all.inputs(), {}).render(settings()).image.rgb_layer("");
+  const std::vector<float> a = PathTracer(own.inputs(), {}).render(short_render()).image.rgb_layer("");
+  const std::vector<float> b = PathTracer(all.inputs(), {}).render(short_render()).image.rgb_layer("");
   expect_builds_differ(scene, own, all, file);
   EXPECT_GT(*std::max_element(a.begin(), a.end()), 0.0f) << file;
   EXPECT_EQ(a, b) << file;
@@ -73,10 +69,10 @@ TEST(SceneKernels, PathTracerGlassBox) { expect_pt_builds_agree("glass-box.xml")
 TEST(SceneKernels, PathTracerEnvironmentScene) { expect_pt_builds_agree("environment.xml"); }
 
 TEST(SceneKernels, GptEnvironmentScene) {
-  const Scene scene = project_scene("environment.xml");
+  const Scene scene = test::project_scene("environment.xml", 32);
   OnBuild own(scene, true), all(scene, false);
-  const GradientImages a = GradientPathTracer(own.inputs(), {}).render_gradients(settings());
-  const GradientImages b = GradientPathTracer(all.inputs(), {}).render_gradients(settings());
+  const GradientImages a = GradientPathTracer(own.inputs(), {}).render_gradients(short_render());
+  const GradientImages b = GradientPathTracer(all.inputs(), {}).render_gradients(short_render());
   EXPECT_GT(*std::max_element(a.primal.begin(), a.primal.end()), 0.0f);
   EXPECT_EQ(a.primal, b.primal);
   EXPECT_EQ(a.dx, b.dx);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/integrator.h"
+#include "scene/load_scene.h"
 #include "scene/scene.h"
 #include "support/statistics.h"
 
@@ -52,6 +53,11 @@ inline Scene small_film(Scene scene, int width) {
   scene.camera.width = width;
   scene.camera.height = height;
   return scene;
+}
+
+// The project's scene `file` (in scenes/) on a film `width` pixels wide (small_film).
+inline Scene project_scene(const std::string& file, int width) {
+  return small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), width);
 }
 
 // Expects every block of the runs a and b (runs[k][block]), and their sums over the image (far

@@ -23,8 +23,7 @@ namespace gdr::test {
 struct ConsistencyScene {
   static constexpr int kMaxDepth = 6;
 
-  explicit ConsistencyScene(const std::string& file)
-      : name(file), scene(small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), 32)) {}
+  explicit ConsistencyScene(const std::string& file) : name(file), scene(project_scene(file, 32)) {}
   // `name` tells the reference cache which scene this is.
   ConsistencyScene(Scene s, std::string name) : name(std::move(name)), scene(std::move(s)) {}
   std::string name;
