@@ -16,15 +16,15 @@
 namespace gdr {
 namespace {
 
-constexpr int kRuns = 16;
+constexpr int kTracerRuns = 16;
 
 void expect_agrees_with_pt(const Scene& scene, const std::string& name, int lt_spp, int pt_spp, int max_depth) {
   test::SceneOnDevice on_device(scene);
   Bidirectional lt(on_device.inputs(), BidirSettings{});
   PathTracer pt(on_device.inputs(), PtSettings{});
   const int w = scene.camera.width, h = scene.camera.height;
-  test::expect_blocks_agree(test::block_means(lt, w, h, lt_spp, max_depth, 1, kRuns),
-                            test::block_means(pt, w, h, pt_spp, max_depth, 101, kRuns), name, "lt", "pt");
+  test::expect_blocks_agree(test::block_means(lt, w, h, lt_spp, max_depth, 1, kTracerRuns),
+                            test::block_means(pt, w, h, pt_spp, max_depth, 101, kTracerRuns), name, "lt", "pt");
 }
 
 TEST(LightTracer, CornellBoxAgreesWithPt) {

@@ -79,4 +79,7 @@ inline int count_files(const TempDir& dir, const std::string& suffix) {
 
 inline std::string source_scene(const std::string& name) { return std::string(GDR_SOURCE_DIR) + "/scenes/" + name; }
 
+// The project's Cornell box, quoted for a command line.
+inline const std::string kCornell = "'" + source_scene("cornell-box.xml") + "'";
+
 }  // namespace gdr::test

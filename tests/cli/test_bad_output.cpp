@@ -31,7 +31,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 const std::string kScene = source_scene("cornell-box.xml");
-const std::string kCornell = "'" + kScene + "'";
 const std::string kTiny = kCornell + " -D res=8 --quiet";
 
 // Every name in `dir` (hidden ones too), sorted.

@@ -14,8 +14,6 @@
 namespace gdr::test {
 namespace {
 
-const std::string kCornell = "'" + source_scene("cornell-box.xml") + "'";
-
 // A failed run: non-zero exit, the output mentions `needle`, no image was written.
 void expect_failure(const CliResult& r, const std::string& needle, const TempDir& dir) {
   EXPECT_NE(r.code, 0) << r.output;

@@ -30,13 +30,6 @@ using test::ConsistencyScene;
 using test::consistency_errors;
 using test::consistency_settings;
 
-ConsistencyScene& box(const std::string& file = "cornell-box.xml") {
-  static std::map<std::string, std::unique_ptr<ConsistencyScene>> boxes;
-  std::unique_ptr<ConsistencyScene>& b = boxes[file];
-  if (!b) b = std::make_unique<ConsistencyScene>(file);
-  return *b;
-}
-
 std::unique_ptr<GradientBidirectional> gvcm(const RenderInputs& in, const IntegratorParams& p = {}) {
   return std::make_unique<GradientBidirectional>(in, gvcm_settings(p), p, gvcm_photon_settings(p));
 }
@@ -51,15 +44,15 @@ Bidirectional vcm_balance(const RenderInputs& in) {
 // with light tracing left unshifted); primal 0.231, 0.0157, 0.0029; reconstruction 0.228, 0.0145,
 // 0.0026.
 TEST(Gvcm, ErrorFallsAsPassesGrow) {
-  auto g = gvcm(box().on_device.inputs());
-  test::expect_errors_fall_with_passes(*g, box());
+  auto g = gvcm(test::consistency_scene("cornell-box.xml").on_device.inputs());
+  test::expect_errors_fall_with_passes(*g, test::consistency_scene("cornell-box.xml"));
 }
 
 // Measured at 4 and 16 passes (sums of the two seeds): gvcm 0.0140 and 0.0041, vcm's differences
 // 0.0655 and 0.0164 (ratios 0.21, 0.25); with light tracing left unshifted gvcm 0.0258 and 0.0075
 // (0.39, 0.46).
 TEST(Gvcm, GradientsBeatVcmDifferences) {
-  ConsistencyScene& b = box();
+  ConsistencyScene& b = test::consistency_scene("cornell-box.xml");
   auto g = gvcm(b.on_device.inputs());
   Bidirectional vcm = vcm_balance(b.on_device.inputs());
   for (int spp : {4, 16}) {
@@ -77,12 +70,12 @@ TEST(Gvcm, GradientsBeatVcmDifferences) {
 // before light tracing was shifted 0.00033, and with the merges' light-side share halved in their
 // weights then 0.00049).
 TEST(Gvcm, MeanGradientsConverge) {
-  auto g = gvcm(box().on_device.inputs());
-  EXPECT_LT(test::mean_gradient_relmse(*g, 64, 8, box()), 0.00045);
+  auto g = gvcm(test::consistency_scene("cornell-box.xml").on_device.inputs());
+  EXPECT_LT(test::mean_gradient_relmse(*g, 64, 8, test::consistency_scene("cornell-box.xml")), 0.00045);
 }
 
 void expect_primal_agrees_with_vcm(const std::string& file, double tolerance, const IntegratorParams& params = {}) {
-  ConsistencyScene& b = box(file);
+  ConsistencyScene& b = test::consistency_scene(file);
   auto g = gvcm(b.on_device.inputs(), params);
   Bidirectional vcm = vcm_balance(b.on_device.inputs());
   double sum_gvcm = 0, sum_vcm = 0;

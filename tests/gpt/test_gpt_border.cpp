@@ -17,7 +17,7 @@
 namespace gdr {
 namespace {
 
-constexpr int kSize = 32, kSpp = 512;
+constexpr int kBorderSize = 32, kBorderSpp = 512;
 constexpr double kAlbedo = 0.5;
 
 const char* kScene = R"(
@@ -29,12 +29,13 @@ const char* kScene = R"(
     <bsdf type="diffuse"><rgb name="reflectance" value="0.5"/></bsdf></shape>
   <emitter type="constant"><rgb name="radiance" value="1"/></emitter>)";
 
-// Luminance of pixels (x0 + i dx, y0 + i dy), i < kSize, and the t statistic of their mean
+// Luminance of pixels (x0 + i dx, y0 + i dy), i < kBorderSize, and the t statistic of their mean
 // against `expected`.
-double t_statistic(const std::vector<float>& rgb, int x0, int y0, int dx, int dy, double expected, int count = kSize) {
+double t_statistic(const std::vector<float>& rgb, int x0, int y0, int dx, int dy, double expected,
+                   int count = kBorderSize) {
   double sum = 0, sum2 = 0;
   for (int i = 0; i < count; ++i) {
-    const float* c = &rgb[3 * size_t((y0 + i * dy) * kSize + x0 + i * dx)];
+    const float* c = &rgb[3 * size_t((y0 + i * dy) * kBorderSize + x0 + i * dx)];
     double v = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
     sum += v;
     sum2 += v * v;
@@ -49,14 +50,14 @@ TEST(GptBorder, PrimalAndGradientsAtTheEdgesMatchTheExactImage) {
   ASSERT_EQ(scene.camera.sample_border, 0);
   test::SceneOnDevice on_device(scene);
   RenderSettings s;
-  s.spp = kSpp;
+  s.spp = kBorderSpp;
   s.seed = 5;
   s.max_depth = 2;
   GradientPathTracer gpt(on_device.inputs(), GptSettings{});
   GradientImages g = gpt.render_gradients(s);
   PathTracer pt(on_device.inputs(), PtSettings{});
   std::vector<float> img = pt.render(s).image.rgb_layer("");
-  const int last = kSize - 1;
+  const int last = kBorderSize - 1;
   struct Line {
     const char* name;
     int x0, y0, dx, dy;

@@ -13,9 +13,9 @@
 namespace gdr {
 namespace {
 
-constexpr int kSpp = 4;
+constexpr int kUnbiasedSpp = 4;
 
-void expect_unbiased(Scene scene, const std::string& scene_file, int shift, int spp = kSpp) {
+void expect_unbiased(Scene scene, const std::string& scene_file, int shift, int spp = kUnbiasedSpp) {
   GptSettings gs;
   gs.shift = shift;
   test::GradientCase c;

@@ -1,7 +1,7 @@
 // G-PT's per-pixel variance estimates (of the means primal, dx and dy) are unbiased: over many
 // seeds, their mean must match the empirical variance of the pixel means across those seeds.
 //
-// kGroups groups of kPerGroup renders (seeds 1.., kSpp passes each). In group g and image block
+// kGroups groups of kPerGroup renders (seeds 1.., kVarianceSpp passes each). In group g and image block
 // b (a quadrant, summed over its pixels and channels), T = mean over the group's renders of the
 // summed estimates - the summed sample variances (over the group's renders) of the pixel means.
 // Both terms estimate the same sum of variances without bias, so T has mean 0, and the groups
@@ -20,7 +20,7 @@
 namespace gdr {
 namespace {
 
-constexpr int kWidth = 16, kSpp = 4, kGroups = 12, kPerGroup = 8, kMaxDepth = 8;
+constexpr int kVarianceWidth = 16, kVarianceSpp = 4, kGroups = 12, kPerGroup = 8, kVarianceMaxDepth = 8;
 
 struct Layer {
   const char* name;
@@ -33,7 +33,7 @@ const Layer kLayers[] = {{"primal", &GradientImages::primal, &GradientImages::pr
 
 void expect_unbiased_variance(const std::string& scene_file) {
   Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
-  const int w = kWidth, h = std::max(2, (kWidth * scene.camera.height / scene.camera.width) / 2 * 2);
+  const int w = kVarianceWidth, h = std::max(2, (kVarianceWidth * scene.camera.height / scene.camera.width) / 2 * 2);
   scene.camera.width = w;
   scene.camera.height = h;
   test::SceneOnDevice on_device(scene);
@@ -50,11 +50,11 @@ void expect_unbiased_variance(const std::string& scene_file) {
     std::vector<GradientImages> runs;
     for (int k = 0; k < kPerGroup; ++k) {
       RenderSettings s;
-      s.spp = kSpp;
+      s.spp = kVarianceSpp;
       s.seed = uint32_t(seed++);
-      s.max_depth = kMaxDepth;
+      s.max_depth = kVarianceMaxDepth;
       runs.push_back(gpt.render_gradients(s));
-      ASSERT_EQ(runs.back().samples, kSpp);
+      ASSERT_EQ(runs.back().samples, kVarianceSpp);
     }
     for (int l = 0; l < 3; ++l) {
       const Layer& layer = kLayers[l];

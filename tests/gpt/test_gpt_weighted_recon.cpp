@@ -4,7 +4,7 @@
 // rare bright path raises a pixel's variance estimate with its value, loses weight and the image
 // comes out darker, by a few percent on the caustics scene.)
 //
-// kRuns renders (seeds 1.., kSpp passes each); per render, d = mean over the image of
+// kReconRuns renders (seeds 1.., kReconSpp passes each); per render, d = mean over the image of
 // (reconstruction - primal), whose expectation is 0 for an unbiased reconstruction. A t-test of
 // mean(d) = 0 over the runs (paired: the primal's own noise cancels in d), per scene at a
 // false-positive rate of 1e-3.
@@ -18,21 +18,21 @@
 namespace gdr {
 namespace {
 
-constexpr int kWidth = 24, kSpp = 8, kRuns = 16, kMaxDepth = 8;
+constexpr int kReconWidth = 24, kReconSpp = 8, kReconRuns = 16, kReconMaxDepth = 8;
 
 void expect_brightness_kept(const std::string& scene_file) {
   Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
-  scene.camera.width = kWidth;
-  scene.camera.height = std::max(2, kWidth * scene.camera.height / scene.camera.width);
+  scene.camera.width = kReconWidth;
+  scene.camera.height = std::max(2, kReconWidth * scene.camera.height / scene.camera.width);
   test::SceneOnDevice on_device(scene);
   GradientPathTracer gpt(on_device.inputs(), GptSettings{});
   const ReconSettings weighted = recon_settings("weighted", 1.0f, "fast");
   std::vector<double> d, brightness;
-  for (int k = 0; k < kRuns; ++k) {
+  for (int k = 0; k < kReconRuns; ++k) {
     RenderSettings s;
-    s.spp = kSpp;
+    s.spp = kReconSpp;
     s.seed = uint32_t(1 + k);
-    s.max_depth = kMaxDepth;
+    s.max_depth = kReconMaxDepth;
     GradientImages g = gpt.render_gradients(s);
     ASSERT_FALSE(g.halves[0].primal.empty());
     ASSERT_FALSE(g.halves[1].primal.empty());
@@ -52,7 +52,7 @@ void expect_brightness_kept(const std::string& scene_file) {
   test::MeanVar mv = test::mean_and_variance(d), mb = test::mean_and_variance(brightness);
   ASSERT_GT(mv.var_of_mean, 0.0);
   const double t = mv.mean / std::sqrt(mv.var_of_mean);
-  EXPECT_GT(test::student_t_two_sided_p(t, kRuns - 1), 1e-3)
+  EXPECT_GT(test::student_t_two_sided_p(t, kReconRuns - 1), 1e-3)
       << scene_file << ": weighted reconstruction minus primal " << mv.mean << " +- " << std::sqrt(mv.var_of_mean)
       << " (image mean " << mb.mean << ")";
 }

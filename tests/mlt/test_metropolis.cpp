@@ -18,7 +18,7 @@
 namespace gdr {
 namespace {
 
-constexpr int kRuns = 16;
+constexpr int kMltRuns = 16;
 
 // A short render's settings for a film of a few hundred pixels: 2048 chains (one step of all of
 // them is about 3.5 mutations a pixel at 24 x 24), a bootstrap of 2^16 samples.
@@ -37,8 +37,8 @@ void expect_agrees_with_pt(const Scene& scene, const std::string& name, int pass
   Metropolis mlt(on_device.inputs(), small_mlt());
   PathTracer pt(on_device.inputs(), PtSettings{});
   const int w = scene.camera.width, h = scene.camera.height;
-  test::expect_blocks_agree(test::block_means(mlt, w, h, passes, max_depth, 1, kRuns),
-                            test::block_means(pt, w, h, 8, max_depth, 101, kRuns), name, "mlt", "pt");
+  test::expect_blocks_agree(test::block_means(mlt, w, h, passes, max_depth, 1, kMltRuns),
+                            test::block_means(pt, w, h, 8, max_depth, 101, kMltRuns), name, "mlt", "pt");
 }
 
 TEST(Mlt, CornellBoxAgreesWithPt) {
@@ -61,7 +61,7 @@ TEST(Mlt, NormalizationIsTheImagesLuminanceSum) {
   Metropolis mlt(on_device.inputs(), small_mlt());
   PathTracer pt(on_device.inputs(), PtSettings{});
   std::vector<double> b, sums;
-  for (int k = 0; k < kRuns; ++k) {
+  for (int k = 0; k < kMltRuns; ++k) {
     RenderSettings s;
     s.spp = 4;
     s.max_depth = 6;

@@ -14,7 +14,7 @@
 namespace gdr {
 namespace {
 
-constexpr int kWidth = 24, kBlock = 4, kRuns = 24, kSpp = 4;
+constexpr int kStrategyWidth = 24, kBlock = 4, kStrategyRuns = 24, kStrategySpp = 4;
 
 // runs[k][block]: the block's mean luminance in run k.
 std::vector<std::vector<double>> block_means(test::SceneOnDevice& scene, int width, int height, int strategy,
@@ -23,7 +23,7 @@ std::vector<std::vector<double>> block_means(test::SceneOnDevice& scene, int wid
   pt.strategy = strategy;
   PathTracer tracer(scene.inputs(), pt);
   std::vector<std::vector<double>> runs;
-  for (int k = 0; k < kRuns; ++k) {
+  for (int k = 0; k < kStrategyRuns; ++k) {
     RenderSettings s;
     s.spp = spp;
     s.seed = 1 + k;
@@ -41,8 +41,8 @@ std::vector<std::vector<double>> block_means(test::SceneOnDevice& scene, int wid
   return runs;
 }
 
-void expect_same_expectation(Scene scene, const std::string& scene_file, bool check_bsdf, int film_width = kWidth,
-                             int spp = kSpp) {
+void expect_same_expectation(Scene scene, const std::string& scene_file, bool check_bsdf,
+                             int film_width = kStrategyWidth, int spp = kStrategySpp) {
   // A small film of the same aspect (the field of view is unchanged), whole blocks only.
   const int width = film_width;
   const int height = std::max(kBlock, (film_width * scene.camera.height / scene.camera.width) / kBlock * kBlock);
@@ -56,7 +56,7 @@ void expect_same_expectation(Scene scene, const std::string& scene_file, bool ch
   const double alpha = test::sidak(1e-3, (check_bsdf ? 2 : 1) * blocks);
   for (int b = 0; b < blocks; ++b) {
     std::vector<double> m, f, l;
-    for (int k = 0; k < kRuns; ++k) {
+    for (int k = 0; k < kStrategyRuns; ++k) {
       m.push_back(mis[k][b]);
       f.push_back(bsdf[k][b]);
       l.push_back(light[k][b]);

@@ -1,7 +1,7 @@
 // Spectra to RGB as Mitsuba 3's RGB variants do it: properties of the conversion, and reference
 // colours produced by Mitsuba 3 itself.
 //
-// Reference values: the pip package mitsuba 3.9.1, variant scalar_rgb, loading an XML string and
+// SpectrumReference values: the pip package mitsuba 3.9.1, variant scalar_rgb, loading an XML string and
 // reading the resulting texture, e.g.
 //   mi.traverse(mi.load_string('<bsdf version="3.0.0" type="diffuse"><spectrum
 //       name="reflectance" value="380:0.1, 780:2"/></bsdf>'))['reflectance.value']
@@ -50,13 +50,13 @@ Samples parse(const std::string& text) {
   return s;
 }
 
-struct Reference {
+struct SpectrumReference {
   const char* spectrum;
   SpectrumUse use;
   double rgb[3];
 };
 
-const Reference kReferences[] = {
+const SpectrumReference kReferences[] = {
     {"400:0.5, 700:0.5", SpectrumUse::Reflectance, {0.497671008, 0.499878198, 0.497454554}},
     {"400:0.5, 700:0.5", SpectrumUse::Emission, {0.59984678, 0.474760175, 0.451721668}},
     {"400:0, 500:8, 600:15.6, 700:18.4", SpectrumUse::Emission, {20.7108364, 10.8546343, 2.77115202}},
@@ -72,7 +72,7 @@ const Reference kReferences[] = {
 };
 
 TEST(Spectrum, AgreesWithMitsuba) {
-  for (const Reference& r : kReferences) {
+  for (const SpectrumReference& r : kReferences) {
     SpectrumRgb c = spectrum_to_rgb(parse(r.spectrum), r.use);
     expect_rgb(c.rgb, r.rgb, std::string(r.spectrum) + " use " + std::to_string(static_cast<int>(r.use)));
   }

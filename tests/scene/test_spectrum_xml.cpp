@@ -18,12 +18,12 @@ namespace {
 using test::all_warnings;
 using test::has_warning;
 
-const char* kLight = R"(<emitter type="point"><point name="position" x="0" y="2" z="0"/></emitter>)";
+const char* kPointLight = R"(<emitter type="point"><point name="position" x="0" y="2" z="0"/></emitter>)";
 
 // The scene's lines: 1 <scene>, 2 <sensor>, 3 the point light, then `body` from line 4.
-Scene load(const test::TempFolder& folder, const std::string& body) {
-  return load_scene(folder.write("s.xml", test::scene_xml("<sensor type=\"perspective\"/>\n" + std::string(kLight) +
-                                                          "\n" + body)));
+Scene load_lit(const test::TempFolder& folder, const std::string& body) {
+  return load_scene(folder.write(
+      "s.xml", test::scene_xml("<sensor type=\"perspective\"/>\n" + std::string(kPointLight) + "\n" + body)));
 }
 
 std::string diffuse(const std::string& spectrum) {
@@ -55,36 +55,36 @@ const GdrLight& area_light(const Scene& s) {
 TEST(SpectrumXml, ReflectanceIsClampedToZeroOneWithAWarning) {
   test::TempFolder folder;
   // Red above 1, as Mitsuba clamps it (with its "clamping out-of-gamut color" warning).
-  Scene s = load(folder, diffuse("380:0.1, 780:2"));
+  Scene s = load_lit(folder, diffuse("380:0.1, 780:2"));
   ASSERT_EQ(s.materials.size(), 1u);
   expect_rgb(s.materials[0].reflectance, 1.0, 0.873267233, 0.388453364);
   EXPECT_TRUE(has_warning(s, {"s.xml:5", "reflectance", "clamped", "1.34513"})) << all_warnings(s);
   // Blue below 0 (outside the sRGB gamut).
-  Scene g = load(folder, diffuse("500:0.2, 600:0.9"));
+  Scene g = load_lit(folder, diffuse("500:0.2, 600:0.9"));
   expect_rgb(g.materials[0].reflectance, 0.318239361, 0.515803158, 0.0);
   EXPECT_TRUE(has_warning(g, {"s.xml:5", "reflectance", "clamped"})) << all_warnings(g);
   // Inside [0, 1]: no warning.
-  Scene w = load(folder, diffuse("400:0.5, 700:0.5"));
+  Scene w = load_lit(folder, diffuse("400:0.5, 700:0.5"));
   expect_rgb(w.materials[0].reflectance, 0.497671008, 0.499878198, 0.497454554);
   EXPECT_TRUE(w.warnings.empty()) << all_warnings(w);
 }
 
 TEST(SpectrumXml, EmissionIsUnboundedButNeverNegative) {
   test::TempFolder folder;
-  Scene s = load(folder, area("<spectrum name=\"radiance\" value=\"400:0, 500:8, 600:15.6, 700:18.4\"/>"));
+  Scene s = load_lit(folder, area("<spectrum name=\"radiance\" value=\"400:0, 500:8, 600:15.6, 700:18.4\"/>"));
   expect_rgb(area_light(s).radiance, 20.7108364, 10.8546343, 2.77115202);
   EXPECT_TRUE(s.warnings.empty()) << all_warnings(s);
-  Scene g = load(folder, area("<spectrum name=\"radiance\" value=\"550:1, 560:1\"/>"));
+  Scene g = load_lit(folder, area("<spectrum name=\"radiance\" value=\"550:1, 560:1\"/>"));
   expect_rgb(area_light(g).radiance, 0.0122890919, 0.133081466, 0.0);
   EXPECT_TRUE(has_warning(g, {"s.xml:5", "radiance", "clamped"})) << all_warnings(g);
   // A single value is the flat spectrum of that value (illuminant E), not grey.
-  Scene e = load(folder, area("<spectrum name=\"radiance\" value=\"3\"/>"));
+  Scene e = load_lit(folder, area("<spectrum name=\"radiance\" value=\"3\"/>"));
   expect_rgb(area_light(e).radiance, 3.61438179, 2.84487295, 2.72674823);
 }
 
 TEST(SpectrumXml, ConductorEtaAndKAreUnbounded) {
   test::TempFolder folder;
-  Scene s = load(folder, R"(<shape type="sphere"><bsdf type="conductor">
+  Scene s = load_lit(folder, R"(<shape type="sphere"><bsdf type="conductor">
       <spectrum name="eta" value="400:0, 500:8, 600:15.6, 700:18.4"/> <spectrum name="k" value="2"/>
     </bsdf></shape>)");
   ASSERT_EQ(s.materials.size(), 1u);
@@ -105,7 +105,7 @@ TEST(SpectrumXml, MalformedSpectraAreErrorsNamingFileAndLine) {
                  Case{"400:0.5, 700:x", "not a number"}, Case{"-0.5", "negative"}}) {
     SCOPED_TRACE(c.value);
     try {
-      load(folder, diffuse(c.value));
+      load_lit(folder, diffuse(c.value));
       FAIL() << "no error";
     } catch (const InputError& e) {
       std::string msg = e.what();
@@ -118,7 +118,7 @@ TEST(SpectrumXml, MalformedSpectraAreErrorsNamingFileAndLine) {
 TEST(SpectrumXml, SpectrumPluginsConvertLikeTheInlineList) {
   test::TempFolder folder;
   const float* inline_rgb = nullptr;
-  Scene listed = load(folder, area("<spectrum name=\"radiance\" value=\"400:0, 500:8, 600:15.6, 700:18.4\"/>"));
+  Scene listed = load_lit(folder, area("<spectrum name=\"radiance\" value=\"400:0, 500:8, 600:15.6, 700:18.4\"/>"));
   inline_rgb = area_light(listed).radiance;
   for (const char* plugin : {R"(<spectrum type="irregular" name="radiance">
                                  <string name="wavelengths" value="400, 500, 600, 700"/>
@@ -126,21 +126,24 @@ TEST(SpectrumXml, SpectrumPluginsConvertLikeTheInlineList) {
                              R"(<spectrum type="regular" name="radiance">
                                  <float name="wavelength_min" value="400"/> <float name="wavelength_max" value="700"/>
                                  <string name="values" value="0, 8, 15.6, 18.4"/></spectrum>)"}) {
-    Scene s = load(folder, area(plugin));
+    Scene s = load_lit(folder, area(plugin));
     for (int k = 0; k < 3; ++k) EXPECT_EQ(area_light(s).radiance[k], inline_rgb[k]) << plugin;
     EXPECT_TRUE(s.warnings.empty()) << all_warnings(s);
   }
-  Scene bb = load(folder, area(R"(<spectrum type="blackbody" name="radiance"><float name="temperature" value="3000"/></spectrum>)"));
+  Scene bb = load_lit(
+      folder,
+      area(R"(<spectrum type="blackbody" name="radiance"><float name="temperature" value="3000"/></spectrum>)"));
   const float* c = area_light(bb).radiance;
   EXPECT_GT(c[0], c[1]);
   EXPECT_GT(c[1], c[2]);
   EXPECT_TRUE(bb.warnings.empty()) << all_warnings(bb);
   // A typo inside a plugin is an unknown parameter; an unknown plugin is an error at its line.
-  Scene typo = load(folder, area(R"(<spectrum type="blackbody" name="radiance"><float name="temperature" value="3000"/>
+  Scene typo =
+      load_lit(folder, area(R"(<spectrum type="blackbody" name="radiance"><float name="temperature" value="3000"/>
                                     <float name="temprature" value="1"/></spectrum>)"));
   EXPECT_TRUE(has_warning(typo, {"s.xml:6", "temprature"})) << all_warnings(typo);
   try {
-    load(folder, area(R"(<spectrum type="cie1931" name="radiance"/>)"));
+    load_lit(folder, area(R"(<spectrum type="cie1931" name="radiance"/>)"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("s.xml:5"), std::string::npos) << e.what();

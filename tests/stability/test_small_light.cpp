@@ -10,12 +10,12 @@
 namespace gdr::test {
 namespace {
 
-constexpr int kRes = 24;
+constexpr int kSmallLightRes = 24;
 constexpr float kFov = 40.0f;
 constexpr float kPlaneZ = 10.0f;   // the lit plane z = 10, facing the camera at the origin
 constexpr float kHeight = 1.0f;    // lights at distance h in front of the plane
 constexpr float kLightX = 4.0f;    // at x = +-4: outside the view, so only their light is seen
-constexpr float kSide = 1e-3f, kLe = 1e8f, kRho = 0.8f;
+constexpr float kSide = 1e-3f, kSmallLightLe = 1e8f, kRho = 0.8f;
 
 // The plane with two tiny lights facing it, symmetric about x = 0 and y = 0 so the expected
 // image does not depend on the film's axis directions.
@@ -26,9 +26,9 @@ Scene small_light_scene(const GdrMaterial& plane) {
   b.shape(quad_mesh({-5, -5, kPlaneZ}, {-5, 5, kPlaneZ}, {5, 5, kPlaneZ}, {5, -5, kPlaneZ}), mat, 0.0f, "plane");
   for (float x : {-kLightX, kLightX}) {
     float z = kPlaneZ - kHeight, s = 0.5f * kSide;
-    b.shape(quad_mesh({x - s, -s, z}, {x + s, -s, z}, {x + s, s, z}, {x - s, s, z}), black, kLe, "light");
+    b.shape(quad_mesh({x - s, -s, z}, {x + s, -s, z}, {x + s, s, z}, {x - s, s, z}), black, kSmallLightLe, "light");
   }
-  return b.finish(camera_looking_z(0, 0, 0, kFov, kRes));
+  return b.finish(camera_looking_z(0, 0, 0, kFov, kSmallLightRes));
 }
 
 // Expected pixel values: rho / pi * E with the irradiance of a small light E = Le A h^2 / r^4
@@ -37,16 +37,16 @@ std::vector<double> expected_image() {
   const double t = std::tan(kFov * 0.5 * M_PI / 180.0), area = double(kSide) * kSide;
   std::vector<double> img;
   const int sub = 32;
-  for (int py = 0; py < kRes; ++py) {
-    for (int px = 0; px < kRes; ++px) {
+  for (int py = 0; py < kSmallLightRes; ++py) {
+    for (int px = 0; px < kSmallLightRes; ++px) {
       double sum = 0;
       for (int j = 0; j < sub; ++j) {
         for (int i = 0; i < sub; ++i) {
           double fx = px + (i + 0.5) / sub, fy = py + (j + 0.5) / sub;
-          double x = kPlaneZ * (1 - 2 * fx / kRes) * t, y = kPlaneZ * (1 - 2 * fy / kRes) * t;
+          double x = kPlaneZ * (1 - 2 * fx / kSmallLightRes) * t, y = kPlaneZ * (1 - 2 * fy / kSmallLightRes) * t;
           for (double lx : {-kLightX, kLightX}) {
             double r2 = kHeight * kHeight + (x - lx) * (x - lx) + y * y;
-            sum += kLe * area * kHeight * kHeight / (r2 * r2);
+            sum += kSmallLightLe * area * kHeight * kHeight / (r2 * r2);
           }
         }
       }

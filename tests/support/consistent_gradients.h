@@ -91,6 +91,15 @@ struct ConsistencyScene {
   }
 };
 
+// The project's scene `file` as a ConsistencyScene, made once per process (and its reference
+// rendered once).
+inline ConsistencyScene& consistency_scene(const std::string& file) {
+  static std::map<std::string, std::unique_ptr<ConsistencyScene>> scenes;
+  std::unique_ptr<ConsistencyScene>& s = scenes[file];
+  if (!s) s = std::make_unique<ConsistencyScene>(file);
+  return *s;
+}
+
 inline RenderSettings consistency_settings(int spp, uint32_t seed) {
   RenderSettings s;
   s.spp = spp;
