@@ -9,8 +9,8 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   // The suite renders dozens of scenes with each integrator: kernels built with every BSDF, light
   // and texture type serve them all from one build of each program (and the gdrender processes
-  // the tests start inherit it). With an empty PoCL cache, as in CI, ctest took about 635 s
-  // instead of 950 s. Scene builds are what test SceneKernels and MaterialQueues check;
+  // the tests start inherit it). With an empty PoCL cache, as in CI, ctest took 632 s
+  // instead of 909 to 995 s. Scene builds are what tests SceneKernels and MaterialQueues check;
   // GDR_KERNELS=scene runs every test on them.
   setenv("GDR_KERNELS", "all", 0);
   gdr::configure_runtime(0);
