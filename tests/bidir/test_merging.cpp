@@ -22,8 +22,8 @@ namespace gdr {
 namespace {
 
 const std::vector<float>& reference() {
-  test::consistency_scene("cornell-box.xml").render_reference();
-  return test::consistency_scene("cornell-box.xml").reference_;
+  test::consistency_box().render_reference();
+  return test::consistency_box().reference_;
 }
 
 std::vector<float> render(Integrator& integrator, int spp, uint32_t seed) {
@@ -35,7 +35,7 @@ using test::relmse;
 
 // Error at 4, 16 and 64 passes, each the mean over two seeds.
 void expect_error_falls(const BidirSettings& settings, const char* name) {
-  Bidirectional integrator(test::consistency_scene("cornell-box.xml").on_device.inputs(), settings);
+  Bidirectional integrator(test::consistency_box().on_device.inputs(), settings);
   double previous = INFINITY;
   for (int spp : {4, 16, 64}) {
     double e = 0.5 * (relmse(render(integrator, spp, 1), reference()) +
@@ -51,7 +51,7 @@ void expect_error_falls(const BidirSettings& settings, const char* name) {
 // (measured: 0.993 for both; the radius at 16 passes, 1.5 pixels shrunk by 16^-0.125, darkens
 // the box's corners and blurs its light's edge by less than that).
 void expect_small_bias(const BidirSettings& settings, const char* name) {
-  Bidirectional integrator(test::consistency_scene("cornell-box.xml").on_device.inputs(), settings);
+  Bidirectional integrator(test::consistency_box().on_device.inputs(), settings);
   double sum = 0;
   for (uint32_t seed = 1; seed <= 8; ++seed) sum += mean(render(integrator, 16, seed));
   EXPECT_NEAR(sum / 8 / mean(reference()), 1.0, 0.03) << name;
@@ -73,7 +73,7 @@ TEST(Merging, VcmIsConsistent) {
 TEST(Merging, VcmMerges) {
   Stats stats;
   Context ctx(select_device(""), &stats);
-  test::SceneOnDevice on_device(test::consistency_scene("cornell-box.xml").scene, &stats, ctx);
+  test::SceneOnDevice on_device(test::consistency_box().scene, &stats, ctx);
   Bidirectional vcm(on_device.inputs(), vcm_settings({}));
   std::vector<float> a = render(vcm, 2, 3);
   EXPECT_GT(stats.count("bidir/merges"), 0u);

@@ -50,8 +50,8 @@ ConsistencyScene& sky_box() {
 // Measured: gradients 0.0234, 0.0087, 0.0031; primal 0.249, 0.022, 0.0052; reconstruction 0.240,
 // 0.017, 0.0036 (pm's image: 0.27, 0.029, 0.0079, tests/bidir/test_merging.cpp).
 TEST(Gpm, ErrorFallsAsPassesGrow) {
-  GradientPhotonMapping gpm(test::consistency_scene("cornell-box.xml").on_device.inputs(), gpm_settings({}));
-  test::expect_errors_fall_with_passes(gpm, test::consistency_scene("cornell-box.xml"));
+  GradientPhotonMapping gpm(test::consistency_box().on_device.inputs(), gpm_settings({}));
+  test::expect_errors_fall_with_passes(gpm, test::consistency_box());
 }
 
 // The photon shift is what makes the gradients: at equal passes they are closer to the reference's
@@ -72,9 +72,7 @@ void expect_gradients_beat_pm(ConsistencyScene& b, const char* what, double fact
 // Measured: the Cornell box 0.0234 against 0.0847 at 4 passes, 0.0087 against 0.0292 at 16. The
 // sky scene 0.648 against 1.099, 0.268 against 0.462; with its sky photons' shifts refused, 1.086
 // and 0.456: their shift is what correlates the pairs there.
-TEST(Gpm, GradientsBeatPmDifferences) {
-  expect_gradients_beat_pm(test::consistency_scene("cornell-box.xml"), "cornell-box", 0.5);
-}
+TEST(Gpm, GradientsBeatPmDifferences) { expect_gradients_beat_pm(test::consistency_box(), "cornell-box", 0.5); }
 TEST(Gpm, SkyPhotonsGradientsBeatPmDifferences) { expect_gradients_beat_pm(sky_box(), "sky", 0.75); }
 
 // The gradients converge to the reference's differences, not just to something smooth: the mean of
@@ -82,8 +80,8 @@ TEST(Gpm, SkyPhotonsGradientsBeatPmDifferences) { expect_gradients_beat_pm(sky_b
 // that a shift dropping the photon's change of distance to its parent exceeds (measured: 0.0010;
 // without that term 0.0030).
 TEST(Gpm, MeanGradientsConverge) {
-  GradientPhotonMapping gpm(test::consistency_scene("cornell-box.xml").on_device.inputs(), gpm_settings({}));
-  EXPECT_LT(test::mean_gradient_relmse(gpm, 64, 8, test::consistency_scene("cornell-box.xml")), 0.0018);
+  GradientPhotonMapping gpm(test::consistency_box().on_device.inputs(), gpm_settings({}));
+  EXPECT_LT(test::mean_gradient_relmse(gpm, 64, 8, test::consistency_box()), 0.0018);
 }
 
 IntegratorParams params(std::map<std::string, std::string> values) { return IntegratorParams(std::move(values)); }
@@ -177,7 +175,7 @@ void expect_primal_agrees_with_pm(ConsistencyScene& b, const char* what) {
 // the gradients, where a constant factor on both directions' offsets cancels: 30% too much gives
 // the sky scene 1.046.
 TEST(Gpm, PrimalAgreesWithPm) {
-  expect_primal_agrees_with_pm(test::consistency_scene("cornell-box.xml"), "cornell-box");
+  expect_primal_agrees_with_pm(test::consistency_box(), "cornell-box");
   expect_primal_agrees_with_pm(sky_box(), "sky");
 }
 
@@ -210,9 +208,9 @@ TEST(Gpm, ParametersAreChecked) {
   EXPECT_EQ(gpm_settings(params({{"shift", "manifold"}})).shift, GPT_SHIFT_MANIFOLD);
   EXPECT_THROW(gpm_settings(params({{"manifold_iterations", "0"}})), Error);
   EXPECT_EQ(gpm_settings(params({{"shift", "replay"}})).shift, GPT_SHIFT_REPLAY);
-  EXPECT_THROW(GradientPhotonMapping(test::consistency_scene("cornell-box.xml").on_device.inputs(), gpm_settings({}),
-                                     params({{"radius", "0"}})),
-               Error);
+  EXPECT_THROW(
+      GradientPhotonMapping(test::consistency_box().on_device.inputs(), gpm_settings({}), params({{"radius", "0"}})),
+      Error);
 }
 
 }  // namespace

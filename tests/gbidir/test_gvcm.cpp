@@ -44,15 +44,15 @@ Bidirectional vcm_balance(const RenderInputs& in) {
 // with light tracing left unshifted); primal 0.231, 0.0157, 0.0029; reconstruction 0.228, 0.0145,
 // 0.0026.
 TEST(Gvcm, ErrorFallsAsPassesGrow) {
-  auto g = gvcm(test::consistency_scene("cornell-box.xml").on_device.inputs());
-  test::expect_errors_fall_with_passes(*g, test::consistency_scene("cornell-box.xml"));
+  auto g = gvcm(test::consistency_box().on_device.inputs());
+  test::expect_errors_fall_with_passes(*g, test::consistency_box());
 }
 
 // Measured at 4 and 16 passes (sums of the two seeds): gvcm 0.0140 and 0.0041, vcm's differences
 // 0.0655 and 0.0164 (ratios 0.21, 0.25); with light tracing left unshifted gvcm 0.0258 and 0.0075
 // (0.39, 0.46).
 TEST(Gvcm, GradientsBeatVcmDifferences) {
-  ConsistencyScene& b = test::consistency_scene("cornell-box.xml");
+  ConsistencyScene& b = test::consistency_box();
   auto g = gvcm(b.on_device.inputs());
   Bidirectional vcm = vcm_balance(b.on_device.inputs());
   for (int spp : {4, 16}) {
@@ -70,8 +70,8 @@ TEST(Gvcm, GradientsBeatVcmDifferences) {
 // before light tracing was shifted 0.00033, and with the merges' light-side share halved in their
 // weights then 0.00049).
 TEST(Gvcm, MeanGradientsConverge) {
-  auto g = gvcm(test::consistency_scene("cornell-box.xml").on_device.inputs());
-  EXPECT_LT(test::mean_gradient_relmse(*g, 64, 8, test::consistency_scene("cornell-box.xml")), 0.00045);
+  auto g = gvcm(test::consistency_box().on_device.inputs());
+  EXPECT_LT(test::mean_gradient_relmse(*g, 64, 8, test::consistency_box()), 0.00045);
 }
 
 void expect_primal_agrees_with_vcm(const std::string& file, double tolerance, const IntegratorParams& params = {}) {

@@ -371,18 +371,17 @@ void expect_light_tracing_round_trip(const Scene& scene, const std::string& what
 }
 
 TEST(PhotonShift, SumsOfAnUnshiftedPhotonAreItsOwn) {
-  auto project = [](const char* file) { return test::project_scene(file, 24); };
-  expect_sums_unshifted(project("cornell-box.xml"), "cornell-box", {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
-  expect_sums_unshifted(project("environment.xml"), "environment", {GPM_PARENT_INFINITE});
+  expect_sums_unshifted(test::project_scene("cornell-box.xml", 24), "cornell-box",
+                        {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
+  expect_sums_unshifted(test::project_scene("environment.xml", 24), "environment", {GPM_PARENT_INFINITE});
   expect_sums_unshifted(test::point_light_beside_zero_area_emitter(), "point light", {GPM_PARENT_LIGHT});
 }
 
 TEST(LightTracingShift, RoundTripInvertsDensitiesAndValues) {
-  auto project = [](const char* file, int size) { return test::project_scene(file, size); };
-  expect_light_tracing_round_trip(project("cornell-box.xml", 24), "cornell-box",
+  expect_light_tracing_round_trip(test::project_scene("cornell-box.xml", 24), "cornell-box",
                                   {GPM_PARENT_SURFACE, GPM_PARENT_LIGHT});
   // Few of the environment's light subpaths land where the camera sees: a larger film.
-  expect_light_tracing_round_trip(project("environment.xml", 64), "environment", {GPM_PARENT_INFINITE});
+  expect_light_tracing_round_trip(test::project_scene("environment.xml", 64), "environment", {GPM_PARENT_INFINITE});
 }
 
 }  // namespace

@@ -32,9 +32,7 @@ std::string shade_kernel(int t, int lanes) {
 void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   Scene scene = test::project_scene(file, 32);
   Stats stats;
-  Context context(select_device(""), &stats);
-  context.set_scene_kernels(true);  // what this suite checks: the scene's own build
-  test::SceneOnDevice on_device(scene, &stats, context);
+  test::SceneOnCountingDevice on_device(scene, &stats, true);  // what this suite checks: the scene's own build
   RenderSettings s;
   s.spp = 2;
   s.seed = 9;
@@ -43,7 +41,7 @@ void expect_queues_of(const std::string& file, int expected_types, int lanes) {
   pt.lanes = lanes;
   PathTracer(on_device.inputs(), pt).render(s);
 
-  KernelFactory kernels(context, scene);
+  KernelFactory kernels(on_device.context, scene);
   int types = 0;
   uint64_t shaded = 0;
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {

@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <memory>
 #include <string>
 
 #include "integrators/gpt/gradient_path_tracer.h"
@@ -30,16 +29,11 @@ RenderSettings short_render() {
   return s;
 }
 
-// The inputs of a render on a context of its own that builds the scene's kernels or every type's.
+// A render's inputs on a context of its own that builds the scene's kernels or every type's.
 struct OnBuild {
-  OnBuild(const Scene& scene, bool scene_kernels) : context(select_device(""), &stats) {
-    context.set_scene_kernels(scene_kernels);
-    on_device = std::make_unique<test::SceneOnDevice>(scene, &stats, context);
-  }
-  RenderInputs inputs() { return on_device->inputs(); }
+  OnBuild(const Scene& scene, bool scene_kernels) : on_device(scene, &stats, scene_kernels) {}
   Stats stats;
-  Context context;
-  std::unique_ptr<test::SceneOnDevice> on_device;
+  test::SceneOnCountingDevice on_device;
 };
 
 // The two builds differ: the all-type program holds the shading kernel of a type the scene lacks.
@@ -47,8 +41,8 @@ void expect_builds_differ(const Scene& scene, OnBuild& own, OnBuild& all, const 
   for (int t = 0; t < BSDF_TYPE_COUNT; ++t) {
     if (scene.features.bsdf[t]) continue;
     const std::string name = std::string("pt_shade_") + bsdf_type_name(t);
-    EXPECT_THROW(KernelFactory(own.context, scene).make("pt/pt.cl", name), Error) << file << ": " << name;
-    EXPECT_NO_THROW(KernelFactory(all.context, scene).make("pt/pt.cl", name)) << file << ": " << name;
+    EXPECT_THROW(KernelFactory(own.on_device.context, scene).make("pt/pt.cl", name), Error) << file << ": " << name;
+    EXPECT_NO_THROW(KernelFactory(all.on_device.context, scene).make("pt/pt.cl", name)) << file << ": " << name;
     return;
   }
   ADD_FAILURE() << file << " has every BSDF type";
@@ -57,8 +51,8 @@ void expect_builds_differ(const Scene& scene, OnBuild& own, OnBuild& all, const 
 void expect_pt_builds_agree(const std::string& file) {
   const Scene scene = test::project_scene(file, 32);
   OnBuild own(scene, true), all(scene, false);
-  const std::vector<float> a = PathTracer(own.inputs(), {}).render(short_render()).image.rgb_layer("");
-  const std::vector<float> b = PathTracer(all.inputs(), {}).render(short_render()).image.rgb_layer("");
+  const std::vector<float> a = PathTracer(own.on_device.inputs(), {}).render(short_render()).image.rgb_layer("");
+  const std::vector<float> b = PathTracer(all.on_device.inputs(), {}).render(short_render()).image.rgb_layer("");
   expect_builds_differ(scene, own, all, file);
   EXPECT_GT(*std::max_element(a.begin(), a.end()), 0.0f) << file;
   EXPECT_EQ(a, b) << file;
@@ -71,8 +65,8 @@ TEST(SceneKernels, PathTracerEnvironmentScene) { expect_pt_builds_agree("environ
 TEST(SceneKernels, GptEnvironmentScene) {
   const Scene scene = test::project_scene("environment.xml", 32);
   OnBuild own(scene, true), all(scene, false);
-  const GradientImages a = GradientPathTracer(own.inputs(), {}).render_gradients(short_render());
-  const GradientImages b = GradientPathTracer(all.inputs(), {}).render_gradients(short_render());
+  const GradientImages a = GradientPathTracer(own.on_device.inputs(), {}).render_gradients(short_render());
+  const GradientImages b = GradientPathTracer(all.on_device.inputs(), {}).render_gradients(short_render());
   EXPECT_GT(*std::max_element(a.primal.begin(), a.primal.end()), 0.0f);
   EXPECT_EQ(a.primal, b.primal);
   EXPECT_EQ(a.dx, b.dx);

@@ -101,6 +101,8 @@ inline ConsistencyScene& consistency_scene(const std::string& file) {
   if (!s) s = std::make_unique<ConsistencyScene>(file);
   return *s;
 }
+// The diffuse Cornell box (area light), the scene most consistency tests use.
+inline ConsistencyScene& consistency_box() { return consistency_scene("cornell-box.xml"); }
 
 inline RenderSettings consistency_settings(int spp, uint32_t seed) {
   RenderSettings s;

@@ -27,10 +27,18 @@ struct SceneOnDevice {
 // SceneOnDevice on a context of its own that records into `stats`: the kernels' counters
 // (rejected non-finite samples, paths) and launches report to their context's stats, so the
 // shared context would leave them unread.
+// `scene_kernels` chooses the context's kernel builds (Context::scene_kernels) before anything is
+// built on it.
 struct SceneOnCountingDevice {
   SceneOnCountingDevice(const Scene& s, Stats* stats)
       : context(select_device(""), stats), on_device(s, stats, context) {}
+  SceneOnCountingDevice(const Scene& s, Stats* stats, bool scene_kernels)
+      : context(select_device(""), stats), on_device(s, stats, with_scene_kernels(context, scene_kernels)) {}
   RenderInputs inputs() { return on_device.inputs(); }
+  static Context& with_scene_kernels(Context& c, bool on) {
+    c.set_scene_kernels(on);
+    return c;
+  }
 
   Context context;
   SceneOnDevice on_device;
