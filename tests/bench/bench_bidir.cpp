@@ -21,6 +21,7 @@
 #include "render/splat_film.h"
 #include "render/wavefront/primitives.h"
 #include "scene/load_scene.h"
+#include "cornell_label.h"
 #include "support/devices.h"
 
 namespace gdr {
@@ -47,14 +48,9 @@ struct BidirBench {
   }
 };
 
-BidirBench& bench() {
+BidirBench& bidir_bench() {
   static std::unique_ptr<BidirBench> b = std::make_unique<BidirBench>();
   return *b;
-}
-
-
-void label(benchmark::State& state, const char* what) {
-  state.SetLabel(std::string(what) + ", cornell-box 256x256 on " + test::default_context().device().name);
 }
 
 // Renders `integrator` once per iteration (a new seed each) after `s`'s untimed first render (PoCL
@@ -66,7 +62,7 @@ struct TimedRenders {
 };
 TimedRenders timed_renders(benchmark::State& state, Integrator& integrator, RenderSettings s,
                            const std::vector<const char*>& counters, const char* timer = "") {
-  BidirBench& b = bench();
+  BidirBench& b = bidir_bench();
   integrator.render(s);
   std::map<std::string, uint64_t> before;
   for (const char* c : counters) before[c] = b.stats.count(c);
@@ -84,7 +80,7 @@ TimedRenders timed_renders(benchmark::State& state, Integrator& integrator, Rend
 // One pass (the scene's max_depth) of technique range(0) (BIDIR_*): lt's camera rays and light
 // subpaths; bdpt's, pm's and vcm's light subpaths, grid and camera subpaths.
 void BM_BidirPass(benchmark::State& state) {
-  BidirBench& b = bench();
+  BidirBench& b = bidir_bench();
   Bidirectional tracer(RenderInputs{b.ctx, b.scene, *b.embree, *b.device_scene}, bidir_settings(int(state.range(0)), IntegratorParams{}));
   RenderSettings s;
   s.spp = 1;
@@ -99,14 +95,14 @@ void BM_BidirPass(benchmark::State& state) {
   state.counters["merges"] = rate("bidir/merges");
   state.counters["grid_vertices"] = rate("bidir/light_vertices");
   state.counters["grid_build_share"] = r.timer_share;
-  label(state, (std::string(bidir_technique_name(int(state.range(0)))) + ": light subpaths").c_str());
+  bench::cornell_label(state, std::string(bidir_technique_name(int(state.range(0)))) + ": light subpaths");
 }
 BENCHMARK(BM_BidirPass)->DenseRange(BIDIR_LT, BIDIR_VCM)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // mlt's steps: four mutations a pixel a render, the bootstrap of 2^16 samples included; mutations
 // per second and the acceptance of small and large steps.
 void BM_MltMutations(benchmark::State& state) {
-  BidirBench& b = bench();
+  BidirBench& b = bidir_bench();
   Metropolis mlt(RenderInputs{b.ctx, b.scene, *b.embree, *b.device_scene},
                  mlt_settings(IntegratorParams(std::map<std::string, std::string>{{"bootstrap", "65536"}})));
   RenderSettings s;
@@ -118,7 +114,7 @@ void BM_MltMutations(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(small + large));
   state.counters["small_acceptance"] = r.grew["mlt/small_steps_accepted"] / std::max(1.0, small);
   state.counters["large_acceptance"] = r.grew["mlt/large_steps_accepted"] / std::max(1.0, large);
-  label(state, "mlt: mutations");
+  bench::cornell_label(state, "mlt: mutations");
 }
 BENCHMARK(BM_MltMutations)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -191,7 +187,7 @@ BENCHMARK(BM_DeviceSortByKey)->Unit(benchmark::kMillisecond)->UseRealTime();
 // The gather of as many full slots as a pass has subpaths, at film positions uniform over the
 // image, with the box filter (one pixel per slot) and the scene's gaussian (up to 5 x 5).
 void BM_SplatGather(benchmark::State& state) {
-  BidirBench& b = bench();
+  BidirBench& b = bidir_bench();
   Context& ctx = test::default_context();
   GdrCamera cam = b.scene.camera;
   const bool gaussian = state.range(0) != 0;
@@ -220,7 +216,7 @@ void BM_SplatGather(benchmark::State& state) {
     splats.gather(camera, cam.height, b.pixels, film);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.pixels);
-  label(state, gaussian ? "slots, gaussian filter" : "slots, box filter");
+  bench::cornell_label(state, gaussian ? "slots, gaussian filter" : "slots, box filter");
 }
 BENCHMARK(BM_SplatGather)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 

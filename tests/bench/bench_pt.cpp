@@ -14,6 +14,7 @@
 #include "integrators/pt/path_tracer.h"
 #include "render/device_scene.h"
 #include "scene/load_scene.h"
+#include "cornell_label.h"
 #include "support/devices.h"
 
 namespace gdr {
@@ -97,7 +98,7 @@ struct PtBench {
 };
 
 // The tracer with `lanes` paths a work item (1 or 8).
-PtBench& bench(int lanes = 8) {
+PtBench& pt_bench(int lanes = 8) {
   static std::unique_ptr<PtBench> b[2];
   std::unique_ptr<PtBench>& one = b[lanes == 8 ? 1 : 0];
   if (!one) one = std::make_unique<PtBench>(test::default_context(), lanes);
@@ -106,22 +107,18 @@ PtBench& bench(int lanes = 8) {
 
 std::string lanes_label(int lanes) { return lanes == 8 ? ", eight a work item" : ", one a work item"; }
 
-void label(benchmark::State& state, const char* what) {
-  state.SetLabel(std::string(what) + ", cornell-box 256x256 on " + test::default_context().device().name);
-}
-
 void BM_PtGenerate(benchmark::State& state) {
   const int lanes = int(state.range(0));
-  PtBench& b = bench(lanes);
+  PtBench& b = pt_bench(lanes);
   for (auto _ : state) b.tracer->generate(b.params);
   state.SetItemsProcessed(int64_t(state.iterations()) * b.pixels);
-  label(state, ("camera paths" + lanes_label(lanes)).c_str());
+  bench::cornell_label(state, "camera paths" + lanes_label(lanes));
 }
 BENCHMARK(BM_PtGenerate)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Embree closest hit of the camera queue (coherent) and of the first bounce queue (incoherent).
 void BM_PtEmbreeIntersect(benchmark::State& state) {
-  PtBench& b = bench();
+  PtBench& b = pt_bench();
   const int depth = int(state.range(0));
   for (auto _ : state) {
     state.PauseTiming();
@@ -130,14 +127,14 @@ void BM_PtEmbreeIntersect(benchmark::State& state) {
     b.tracer->intersect(depth, b.active[depth], depth == 0);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.active[depth]);
-  label(state, depth == 0 ? "camera rays" : "bounce rays");
+  bench::cornell_label(state, depth == 0 ? "camera rays" : "bounce rays");
 }
 BENCHMARK(BM_PtEmbreeIntersect)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // pt_shade on the intersected camera queue and first bounce queue (emission, NEE, BSDF sampling).
 void BM_PtShade(benchmark::State& state) {
   const int depth = int(state.range(0)), lanes = int(state.range(1));
-  PtBench& b = bench(lanes);
+  PtBench& b = pt_bench(lanes);
   for (auto _ : state) {
     state.PauseTiming();
     b.restore(depth, true);
@@ -145,13 +142,13 @@ void BM_PtShade(benchmark::State& state) {
     b.tracer->shade(b.params, depth, b.active[depth]);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.active[depth]);
-  label(state, ((depth == 0 ? "camera-hit paths" : "bounce-hit paths") + lanes_label(lanes)).c_str());
+  bench::cornell_label(state, (depth == 0 ? "camera-hit paths" : "bounce-hit paths") + lanes_label(lanes));
 }
 BENCHMARK(BM_PtShade)->ArgsProduct({{0, 1}, {1, 8}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Embree occlusion of the first shadow-ray queue.
 void BM_PtEmbreeOccluded(benchmark::State& state) {
-  PtBench& b = bench();
+  PtBench& b = pt_bench();
   for (auto _ : state) {
     state.PauseTiming();
     b.tracer->shadow_rays().write(b.shadow_queue.data(), b.shadow_queue.size());
@@ -159,17 +156,17 @@ void BM_PtEmbreeOccluded(benchmark::State& state) {
     b.tracer->occlude(b.shadows);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * b.shadows);
-  label(state, "shadow rays");
+  bench::cornell_label(state, "shadow rays");
 }
 BENCHMARK(BM_PtEmbreeOccluded)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // pt_shadow on the occlusion results of the first shadow-ray queue.
 void BM_PtShadow(benchmark::State& state) {
-  PtBench& b = bench();
+  PtBench& b = pt_bench();
   b.tracer->shadow_rays().write(b.shadow_occluded.data(), b.shadow_occluded.size());
   for (auto _ : state) b.tracer->add_shadows(b.shadows);
   state.SetItemsProcessed(int64_t(state.iterations()) * b.shadows);
-  label(state, "shadow rays");
+  bench::cornell_label(state, "shadow rays");
 }
 BENCHMARK(BM_PtShadow)->Unit(benchmark::kMillisecond)->UseRealTime();
 
