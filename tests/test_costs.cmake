@@ -4,24 +4,21 @@
 # long suite running alone. Suites missing here keep cost 0; after a run, ctest's own
 # measurements (Testing/Temporary/CTestCostData.txt) take over.
 set(gdr_test_costs
-  "GbdptUnbiased" 162
-  "Gvcm" 84
-  "Gpm" 77
-  "GvcmStability" 73
-  "GptUnbiased" 67
-  "Mlt" 64
-  "Gmlt" 63
-  "MetropolisStability" 61
-  "Gbdpt" 48
-  "BadInputFiles" 38
-  "Cli" 35
-  "AllNonDelta/BsdfChi2" 28
-  "Registry" 27
-  "MarkovChains" 24
-  "GptMaterialQueues" 24
-  "MpiRender" 23
-  "BadOutput" 22
-  "MaterialQueues" 22
+  "Gvcm" 148
+  "GbdptUnbiased" 100
+  "GptUnbiased" 89
+  "Gpm" 87
+  "Mlt" 58
+  "Gmlt" 54
+  "Gbdpt" 43
+  "Cli" 38
+  "AllNonDelta/BsdfChi2" 36
+  "BadInputFiles" 32
+  "BadOutput" 32
+  "MpiRender" 31
+  "MarkovChains" 30
+  "GptMaterialQueues" 25
+  "Registry" 25
 )
 list(LENGTH gdr_test_costs n)
 math(EXPR last "${n} - 1")
