@@ -14,6 +14,7 @@
 #include <string>
 
 #include "accel/embree_scene.h"
+#include "bench/cornell_label.h"
 #include "device/devices.h"
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/mlt/metropolis.h"
@@ -21,7 +22,6 @@
 #include "render/splat_film.h"
 #include "render/wavefront/primitives.h"
 #include "scene/load_scene.h"
-#include "cornell_label.h"
 #include "support/devices.h"
 
 namespace gdr {

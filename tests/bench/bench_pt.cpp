@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "accel/embree_scene.h"
+#include "bench/cornell_label.h"
 #include "integrators/pt/path_tracer.h"
 #include "render/device_scene.h"
 #include "scene/load_scene.h"
-#include "cornell_label.h"
 #include "support/devices.h"
 
 namespace gdr {
