@@ -23,6 +23,7 @@
 #include "render/wavefront/primitives.h"
 #include "scene/load_scene.h"
 #include "support/devices.h"
+#include "support/source_scene.h"
 
 namespace gdr {
 namespace {
@@ -36,7 +37,7 @@ struct BidirBench {
   uint32_t pixels;
 
   BidirBench()
-      : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
+      : scene(load(test::source_scene("cornell-box.xml"))),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
         device_scene(std::make_unique<DeviceScene>(ctx, scene)),
         pixels(uint32_t(scene.camera.width) * scene.camera.height) {}

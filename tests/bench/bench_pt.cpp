@@ -16,6 +16,7 @@
 #include "render/device_scene.h"
 #include "scene/load_scene.h"
 #include "support/devices.h"
+#include "support/source_scene.h"
 
 namespace gdr {
 namespace {
@@ -39,7 +40,7 @@ struct PtBench {
   cl_uint active[2] = {0, 0}, shadows = 0;
 
   PtBench(Context& ctx, int lanes)
-      : scene(load(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml")),
+      : scene(load(test::source_scene("cornell-box.xml"))),
         embree(std::make_unique<EmbreeScene>(scene, BuildQuality::High)),
         device_scene(std::make_unique<DeviceScene>(ctx, scene)),
         tracer(std::make_unique<PathTracer>(RenderInputs{ctx, scene, *embree, *device_scene}, one_batch(lanes))),

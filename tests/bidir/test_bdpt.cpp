@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include "integrators/bidir/bidirectional.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 #include "support/test_scenes.h"

@@ -8,7 +8,6 @@
 #include <cstring>
 
 #include "integrators/bidir/bidirectional.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 

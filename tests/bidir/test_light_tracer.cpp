@@ -36,7 +36,7 @@ TEST(LightTracer, CornellBoxAgreesWithPt) {
 // path tracer's strategy test does for its light-only technique (a light subpath reaches the
 // camera from a smoother plate too rarely for a t-test over a few runs to be valid).
 TEST(LightTracer, GlossyPlatesAgreeWithPt) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/glossy-plates.xml");
+  Scene scene = load_scene(test::source_scene("glossy-plates.xml"));
   for (GdrMaterial& m : scene.materials) {
     if (m.type == BSDF_ROUGH_PLASTIC) m.alpha_u = m.alpha_v = std::max(m.alpha_u, 0.2f);
   }

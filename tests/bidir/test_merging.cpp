@@ -12,7 +12,6 @@
 
 #include "image/image_metrics.h"
 #include "integrators/bidir/bidirectional.h"
-#include "scene/load_scene.h"
 #include "support/consistent_gradients.h"
 #include "support/render.h"
 #include "support/test_scenes.h"

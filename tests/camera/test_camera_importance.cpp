@@ -11,6 +11,7 @@
 
 #include "scene/load_scene.h"
 #include "support/devices.h"
+#include "support/source_scene.h"
 #include "support/test_scenes.h"
 
 namespace gdr {
@@ -65,7 +66,7 @@ CameraKernels& kernels() {
 // camera turned about two axes.
 std::vector<GdrCamera> cameras() {
   std::vector<GdrCamera> out;
-  out.push_back(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml").camera);
+  out.push_back(load_scene(test::source_scene("cornell-box.xml")).camera);
   GdrCamera c = test::camera_looking_z(0.3f, -0.2f, 1.5f, 70.0f, 64);
   c.width = 96;
   c.height = 40;

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "support/source_scene.h"
+
 namespace gdr::test {
 
 struct CliResult {
@@ -76,8 +78,6 @@ inline int count_files(const TempDir& dir, const std::string& suffix) {
   }
   return n;
 }
-
-inline std::string source_scene(const std::string& name) { return std::string(GDR_SOURCE_DIR) + "/scenes/" + name; }
 
 // The project's Cornell box, quoted for a command line.
 inline const std::string kCornell = "'" + source_scene("cornell-box.xml") + "'";

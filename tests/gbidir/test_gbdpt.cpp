@@ -24,13 +24,11 @@
 namespace gdr {
 namespace {
 
-Scene project_scene(const std::string& name) { return load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name); }
-
 void expect_unbiased(const std::string& scene_file, int shift, const test::GradientCase& c = {}) {
   GptSettings gs = gbdpt_settings(IntegratorParams{});
   gs.shift = shift;
   test::expect_gradients_unbiased(
-      project_scene(scene_file), scene_file,
+      load_scene(test::source_scene(scene_file)), scene_file,
       [&](const RenderInputs& in) { return std::make_unique<GradientBidirectional>(in, gs); }, c);
 }
 
@@ -66,7 +64,7 @@ TEST(GbdptUnbiased, EnvironmentMapHybrid) {
 
 TEST(Gbdpt, PrimalAgreesWithBdpt) {
   constexpr int kRuns = 16, kSpp = 8, kMaxDepth = 6;
-  Scene scene = test::small_film(project_scene("cornell-box-caustics.xml"), 24);
+  Scene scene = test::project_scene("cornell-box-caustics.xml", 24);
   test::SceneOnDevice on_device(scene);
   GradientBidirectional gbdpt(on_device.inputs(), gbdpt_settings(IntegratorParams{}));
   Bidirectional bdpt(on_device.inputs(), bdpt_settings(IntegratorParams{}));
@@ -95,9 +93,10 @@ TEST(Gbdpt, PowerPrimalIsBdptsImage) {
     Scene scene;
     int shift;
   };
-  std::vector<Case> cases = {{"cornell-box-caustics.xml", project_scene("cornell-box-caustics.xml"), GPT_SHIFT_HYBRID},
-                             {"cornell-box-caustics.xml", project_scene("cornell-box-caustics.xml"), GPT_SHIFT_MANIFOLD},
-                             {"envmap scene", test::envmap_scene(), GPT_SHIFT_HYBRID}};
+  std::vector<Case> cases = {
+      {"cornell-box-caustics.xml", load_scene(test::source_scene("cornell-box-caustics.xml")), GPT_SHIFT_HYBRID},
+      {"cornell-box-caustics.xml", load_scene(test::source_scene("cornell-box-caustics.xml")), GPT_SHIFT_MANIFOLD},
+      {"envmap scene", test::envmap_scene(), GPT_SHIFT_HYBRID}};
   for (Case& c : cases) {
     Scene scene = test::small_film(c.scene, 32);
     test::SceneOnDevice on_device(scene);
@@ -153,7 +152,7 @@ TEST(Gbdpt, StatsCountConnectionsAndFailures) {
   using Values = std::map<std::string, std::string>;
   for (const char* name : {"cornell-box.xml", "glossy-plates.xml"}) {
     const bool diffuse = std::string(name) == "cornell-box.xml";
-    Scene scene = test::small_film(project_scene(name), 16);
+    Scene scene = test::project_scene(name, 16);
     Stats stats;
     Context context(select_device(""), &stats);
     test::SceneOnDevice on_device(scene, &stats, context);

@@ -21,7 +21,6 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_photon_mapping.h"
-#include "scene/load_scene.h"
 #include "support/consistent_gradients.h"
 #include "support/envmap_scene.h"
 #include "support/render.h"

@@ -18,7 +18,6 @@
 
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_bidirectional.h"
-#include "scene/load_scene.h"
 #include "support/consistent_gradients.h"
 #include "support/render.h"
 #include "util/error.h"

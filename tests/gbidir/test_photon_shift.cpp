@@ -18,7 +18,6 @@
 #include "integrators/bidir/bidirectional.h"
 #include "integrators/gbidir/gradient_bidirectional.h"
 #include "render/manifold_walks.h"
-#include "scene/load_scene.h"
 #include "stability/stability_checks.h"
 #include "support/agreement.h"
 #include "support/devices.h"

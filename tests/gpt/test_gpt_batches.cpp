@@ -12,7 +12,6 @@
 #include <string>
 
 #include "integrators/gpt/gradient_path_tracer.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 #include "util/error.h"

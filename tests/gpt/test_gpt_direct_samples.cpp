@@ -71,7 +71,7 @@ Sums render_seeds(const Scene& scene, int extra, uint32_t first_seed, Make make)
 
 template <class Make>
 void expect_unbiased_and_less_noisy(const char* name, Make make) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box-caustics.xml");
+  Scene scene = load_scene(test::source_scene("cornell-box-caustics.xml"));
   scene.camera.height = kWidth * scene.camera.height / scene.camera.width;
   scene.camera.width = kWidth;
   const Sums plain = render_seeds(scene, 0, 1, make), extra = render_seeds(scene, kExtra, 1001, make);
@@ -134,7 +134,7 @@ TEST(GptDirectSamples, ParameterIsChecked) {
 TEST(GptDirectSamples, MaxDepthZeroStaysBlack) {
   LoadOptions o;
   o.defines = {{"res", "16"}};
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml", o);
+  Scene scene = load_scene(test::source_scene("cornell-box.xml"), o);
   test::SceneOnDevice on_device(scene);
   IntegratorParams params;
   params.set("direct_samples", "8");

@@ -12,7 +12,6 @@
 
 #include "integrators/gbidir/gradient_bidirectional.h"
 #include "integrators/gpt/gradient_path_tracer.h"
-#include "scene/load_scene.h"
 #include "scene/scene_features.h"
 #include "support/agreement.h"
 #include "support/render.h"

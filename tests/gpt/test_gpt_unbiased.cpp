@@ -8,6 +8,7 @@
 #include "scene/load_scene.h"
 #include "support/envmap_scene.h"
 #include "support/gradient_unbiased.h"
+#include "support/source_scene.h"
 #include "support/test_scenes.h"
 
 namespace gdr {
@@ -26,7 +27,7 @@ void expect_unbiased(Scene scene, const std::string& scene_file, int shift, int 
 }
 
 void expect_unbiased(const std::string& scene_file, int shift) {
-  expect_unbiased(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file), scene_file, shift);
+  expect_unbiased(load_scene(test::source_scene(scene_file)), scene_file, shift);
 }
 
 TEST(GptUnbiased, DiffuseCornellBoxHybrid) { expect_unbiased("cornell-box.xml", GPT_SHIFT_HYBRID); }

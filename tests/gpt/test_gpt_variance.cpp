@@ -15,6 +15,7 @@
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "scene/load_scene.h"
 #include "support/render.h"
+#include "support/source_scene.h"
 #include "support/statistics.h"
 
 namespace gdr {
@@ -32,7 +33,7 @@ const Layer kLayers[] = {{"primal", &GradientImages::primal, &GradientImages::pr
                          {"dy", &GradientImages::dy, &GradientImages::dy_variance}};
 
 void expect_unbiased_variance(const std::string& scene_file) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
+  Scene scene = load_scene(test::source_scene(scene_file));
   const int w = kVarianceWidth, h = std::max(2, (kVarianceWidth * scene.camera.height / scene.camera.width) / 2 * 2);
   scene.camera.width = w;
   scene.camera.height = h;
@@ -97,7 +98,7 @@ TEST(GptVariance, EstimatesAreUnbiasedGlossyPlates) { expect_unbiased_variance("
 
 // One pass has no spread to estimate: the estimates are 0, never NaN.
 TEST(GptVariance, OnePassGivesZeroEstimates) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml");
+  Scene scene = load_scene(test::source_scene("cornell-box.xml"));
   scene.camera.width = 8;
   scene.camera.height = 8;
   test::SceneOnDevice on_device(scene);

@@ -13,6 +13,7 @@
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "scene/load_scene.h"
 #include "support/render.h"
+#include "support/source_scene.h"
 #include "support/statistics.h"
 
 namespace gdr {
@@ -21,7 +22,7 @@ namespace {
 constexpr int kReconWidth = 24, kReconSpp = 8, kReconRuns = 16, kReconMaxDepth = 8;
 
 void expect_brightness_kept(const std::string& scene_file) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file);
+  Scene scene = load_scene(test::source_scene(scene_file));
   scene.camera.width = kReconWidth;
   scene.camera.height = std::max(2, kReconWidth * scene.camera.height / scene.camera.width);
   test::SceneOnDevice on_device(scene);

@@ -20,7 +20,7 @@ namespace {
 Scene tiny_cornell_box() {
   LoadOptions o;
   o.defines = {{"res", "8"}};
-  return load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml", o);
+  return load_scene(test::source_scene("cornell-box.xml"), o);
 }
 
 TEST(Registry, EveryEntryRendersATinyScene) {

@@ -6,6 +6,7 @@
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "scene/load_scene.h"
 #include "support/render.h"
+#include "support/source_scene.h"
 
 namespace gdr {
 namespace {
@@ -27,7 +28,7 @@ std::vector<std::string> manifold_entries(const nlohmann::json& j, const std::st
 nlohmann::json render_manifold(const std::string& file) {
   Stats stats;
   Context context(select_device(""), &stats);
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file);
+  Scene scene = load_scene(test::source_scene(file));
   scene.camera.width = scene.camera.height = 32;
   test::SceneOnDevice on_device(scene, &stats, context);
   GptSettings gs;
@@ -40,7 +41,7 @@ nlohmann::json render_manifold(const std::string& file) {
 }
 
 TEST(ManifoldFeatures, DiffuseSceneCompilesAndLaunchesNothingOfIt) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml");
+  Scene scene = load_scene(test::source_scene("cornell-box.xml"));
   GptSettings gs;
   gs.shift = GPT_SHIFT_MANIFOLD;
   EXPECT_FALSE(gpt_manifold_enabled(scene, gs));

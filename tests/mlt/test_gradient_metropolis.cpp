@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include "integrators/mlt/gradient_metropolis.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 #include "support/test_scenes.h"

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include "integrators/mlt/metropolis.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 #include "support/test_scenes.h"

@@ -9,7 +9,6 @@
 #include <string>
 
 #include "integrators/pt/path_tracer.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 #include "util/error.h"

@@ -14,7 +14,6 @@
 
 #include "integrators/pt/path_tracer.h"
 #include "render/wavefront/kernel_factory.h"
-#include "scene/load_scene.h"
 #include "scene/scene_features.h"
 #include "support/agreement.h"
 #include "support/render.h"

@@ -5,6 +5,7 @@
 #include "integrators/registry.h"
 #include "scene/load_scene.h"
 #include "support/render.h"
+#include "support/source_scene.h"
 
 namespace gdr {
 namespace {
@@ -18,7 +19,7 @@ double image_sum(const std::vector<float>& rgb) {
 TEST(MaxDepth, ZeroIsBlackOneIsEmittersOnly) {
   LoadOptions o;
   o.defines = {{"res", "16"}};
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml", o);
+  Scene scene = load_scene(test::source_scene("cornell-box.xml"), o);
   test::SceneOnDevice on_device(scene);
   for (const IntegratorEntry& e : integrator_registry()) {
     SCOPED_TRACE(e.name);

@@ -187,7 +187,7 @@ CameraQueue generate_with(const Scene& scene, int lanes) {
 }
 
 TEST(ShadingLanes, CameraRaysAreOnePathAWorkItems) {
-  Scene base = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml");
+  Scene base = load_scene(test::source_scene("cornell-box.xml"));
   for (int filter : {FILTER_GAUSSIAN, FILTER_TENT, FILTER_BOX}) {
     for (int border : {0, 1}) {
       Scene scene = base;

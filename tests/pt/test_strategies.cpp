@@ -9,6 +9,7 @@
 #include "scene/load_scene.h"
 #include "support/envmap_scene.h"
 #include "support/render.h"
+#include "support/source_scene.h"
 #include "support/statistics.h"
 
 namespace gdr {
@@ -69,7 +70,7 @@ void expect_same_expectation(Scene scene, const std::string& scene_file, bool ch
 }
 
 void expect_same_expectation(const std::string& scene_file, bool check_bsdf) {
-  expect_same_expectation(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + scene_file), scene_file, check_bsdf);
+  expect_same_expectation(load_scene(test::source_scene(scene_file)), scene_file, check_bsdf);
 }
 
 TEST(PathTracerStrategies, CornellBoxAgrees) { expect_same_expectation("cornell-box.xml", true); }
@@ -81,7 +82,7 @@ TEST(PathTracerStrategies, CausticsBoxAgrees) { expect_same_expectation("cornell
 // spp), but at 64 spp one run of 40 held 15 times the mean, and the t-test rejected at p < 1e-7
 // or passed depending on the seeds. Those plates are made as rough as the third (0.07) here.
 TEST(PathTracerStrategies, GlossyPlatesLightSamplingAgrees) {
-  Scene scene = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/glossy-plates.xml");
+  Scene scene = load_scene(test::source_scene("glossy-plates.xml"));
   for (GdrMaterial& m : scene.materials) {
     if (m.type == BSDF_ROUGH_PLASTIC) m.alpha_u = m.alpha_v = std::max(m.alpha_u, 0.07f);
   }

@@ -14,7 +14,6 @@
 #include "integrators/gbidir/gradient_bidirectional.h"
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "render/wavefront/chunks.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 

@@ -12,7 +12,6 @@
 #include <string>
 
 #include "integrators/registry.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/render.h"
 

@@ -7,13 +7,12 @@
 
 #include "scene/describe_scene.h"
 #include "scene/load_scene.h"
+#include "support/source_scene.h"
 
 namespace gdr {
 namespace {
 
-Scene load_project_scene(const std::string& name) {
-  return load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name);
-}
+Scene load_project_scene(const std::string& name) { return load_scene(test::source_scene(name)); }
 
 class ProjectScene : public testing::TestWithParam<const char*> {};
 
@@ -63,7 +62,7 @@ TEST(ProjectScenes, CornellBoxIsDiffuseWithAreaLight) {
 TEST(ProjectScenes, CornellBoxDefaultsCanBeOverridden) {
   LoadOptions options;
   options.defines = {{"res", "64"}, {"spp", "4"}, {"max_depth", "3"}};
-  Scene s = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/cornell-box.xml", options);
+  Scene s = load_scene(test::source_scene("cornell-box.xml"), options);
   EXPECT_EQ(s.camera.width, 64);
   EXPECT_EQ(s.spp, 4);
   EXPECT_EQ(s.max_depth, 3);
@@ -83,11 +82,11 @@ TEST(ProjectScenes, CausticsSceneHasSpecularChains) {
 TEST(ProjectScenes, GlossyPlatesAreNearDeltaOnlyBelowThreshold) {
   LoadOptions options;
   options.glossy_threshold = 0.01f;  // the smoothest plate has alpha 0.005
-  Scene s = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/glossy-plates.xml", options);
+  Scene s = load_scene(test::source_scene("glossy-plates.xml"), options);
   EXPECT_TRUE(s.features.near_delta_surfaces);
   EXPECT_FALSE(s.features.delta_surfaces);
   options.glossy_threshold = 0.001f;
-  s = load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/glossy-plates.xml", options);
+  s = load_scene(test::source_scene("glossy-plates.xml"), options);
   EXPECT_FALSE(s.features.specular_chains());
 }
 

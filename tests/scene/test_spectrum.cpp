@@ -1,7 +1,7 @@
 // Spectra to RGB as Mitsuba 3's RGB variants do it: properties of the conversion, and reference
 // colours produced by Mitsuba 3 itself.
 //
-// SpectrumReference values: the pip package mitsuba 3.9.1, variant scalar_rgb, loading an XML string and
+// Reference values: the pip package mitsuba 3.9.1, variant scalar_rgb, loading an XML string and
 // reading the resulting texture, e.g.
 //   mi.traverse(mi.load_string('<bsdf version="3.0.0" type="diffuse"><spectrum
 //       name="reflectance" value="380:0.1, 780:2"/></bsdf>'))['reflectance.value']
@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "scene/load_scene.h"
 #include "scene/scene_test_files.h"
 #include "scene/spectrum.h"
 #include "util/error.h"

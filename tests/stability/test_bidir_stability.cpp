@@ -11,7 +11,6 @@
 #include "device/devices.h"
 #include "integrators/bidir/bidirectional.h"
 #include "render/device_scene.h"
-#include "scene/load_scene.h"
 #include "stability/stability_checks.h"
 #include "support/test_scenes.h"
 

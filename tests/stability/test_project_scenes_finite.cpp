@@ -4,7 +4,6 @@
 
 #include <string>
 
-#include "scene/load_scene.h"
 #include "stability/stability_checks.h"
 
 namespace gdr::test {

@@ -8,6 +8,7 @@
 
 #include "scene/load_scene.h"
 #include "stability/stability_checks.h"
+#include "support/source_scene.h"
 #include "support/test_scenes.h"
 
 namespace gdr::test {
@@ -21,7 +22,7 @@ struct ScaleCase {
 Scene load_small(const std::string& name) {
   LoadOptions options;
   options.defines = {{"res", "32"}};
-  return load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + name, options);
+  return load_scene(source_scene(name), options);
 }
 
 class SceneScale : public testing::TestWithParam<ScaleCase> {};

@@ -13,6 +13,7 @@
 #include "render/integrator.h"
 #include "scene/load_scene.h"
 #include "scene/scene.h"
+#include "support/source_scene.h"
 #include "support/statistics.h"
 
 namespace gdr::test {
@@ -57,7 +58,7 @@ inline Scene small_film(Scene scene, int width) {
 
 // The project's scene `file` (in scenes/) on a film `width` pixels wide (small_film).
 inline Scene project_scene(const std::string& file, int width) {
-  return small_film(load_scene(std::string(GDR_SOURCE_DIR) + "/scenes/" + file), width);
+  return small_film(load_scene(source_scene(file)), width);
 }
 
 // Expects every block of the runs a and b (runs[k][block]), and their sums over the image (far

@@ -13,7 +13,6 @@
 
 #include "integrators/gpt/gradient_path_tracer.h"
 #include "integrators/pt/path_tracer.h"
-#include "scene/load_scene.h"
 #include "support/agreement.h"
 #include "support/gradient_unbiased.h"
 #include "support/reference_cache.h"

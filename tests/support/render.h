@@ -35,13 +35,15 @@ struct SceneOnCountingDevice {
   SceneOnCountingDevice(const Scene& s, Stats* stats, bool scene_kernels)
       : context(select_device(""), stats), on_device(s, stats, with_scene_kernels(context, scene_kernels)) {}
   RenderInputs inputs() { return on_device.inputs(); }
+
+  Context context;
+  SceneOnDevice on_device;
+
+ private:
   static Context& with_scene_kernels(Context& c, bool on) {
     c.set_scene_kernels(on);
     return c;
   }
-
-  Context context;
-  SceneOnDevice on_device;
 };
 
 // The RGB image (interleaved) of `scene` rendered with `settings`; with `stats`, counted
